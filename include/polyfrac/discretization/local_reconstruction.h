@@ -1,0 +1,102 @@
+#ifndef polyfrac_discretization_local_reconstruction_h
+#define polyfrac_discretization_local_reconstruction_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/dofs/dof_map.h>
+#include <polyfrac/fractures/fracture_network.h>
+
+#include <utility>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The reconstruction operators of one polytope K (scheme.md §4), as
+   * coefficients acting on its local vector unknowns t = node sides of K
+   * (in the order of the cell's vertices) followed by the bubbles of its
+   * + fracture faces:
+   *
+   * - cell gradient ∇^K v = Σ_t v_t ⊗ G_t, where G_t = g_s for a node and
+   *   G_t = N_{Kσ}/|K| for the bubble of σ;
+   * - potential Π^K v(x) = Σ_t v_t (ω_t + G_t·(x − x̄_K)), with ω_t = ω_s^K
+   *   for a node and 0 for a bubble;
+   * - stabilisation S_K(u, v) = h_K^{d-2} Σ_s (u_s − Π^K u(x_s))·(v_s −
+   *   Π^K v(x_s)) + h_K^{d-2} Σ_σ u_{Kσ}·v_{Kσ}, which acts on each
+   *   component alike: stabilisation() returns its scalar matrix.
+   *
+   * All three are exact on affine fields (tests/discretization).
+   */
+  template <int dim>
+  class LocalReconstruction
+  {
+  public:
+    LocalReconstruction(const MeshGeometry<dim> &geometry,
+                        const DoFMap<dim>       &dofs,
+                        const FractureNetwork<dim> &network,
+                        const unsigned int       cell);
+
+    unsigned int
+    n_local() const
+    {
+      return gradient_coefficients.size();
+    }
+
+    /** ω_t + G_t·(x − x̄_K): coefficient of v_t in Π^K v(x). */
+    double
+    potential_coefficient(const unsigned int t, const Point<dim> &x) const
+    {
+      return value_weights[t] + gradient_coefficients[t] * (x - centroid);
+    }
+
+    /** ∇^K v for the local values @p v. */
+    Tensor<2, dim>
+    gradient(const std::vector<Tensor<1, dim>> &v) const;
+
+    /** Π^K v(x) for the local values @p v. */
+    Tensor<1, dim>
+    potential(const std::vector<Tensor<1, dim>> &v, const Point<dim> &x) const;
+
+    /** Scalar matrix of S_K (without the factor 2μ + λ). */
+    FullMatrix<double>
+    stabilisation() const;
+
+    unsigned int                n_nodes;
+    std::vector<Tensor<1, dim>> gradient_coefficients;
+    std::vector<double>         value_weights;
+    Point<dim>                  centroid;
+    double                      measure;
+    double                      diameter;
+    std::vector<Point<dim>>     node_points;
+  };
+
+  /**
+   * Coefficients of a face reconstruction on the global vector unknowns
+   * (block b holds dofs dim b .. dim b + dim - 1; node side n is block n,
+   * the bubble of fracture face i is block n_node_sides + i).
+   */
+  using BlockCoefficients = std::vector<std::pair<unsigned int, double>>;
+
+  /** v̄_{Kσ} = Σ_s ω_s^σ v_{Ks}: the face mean of face @p f seen from cell @p c. */
+  template <int dim>
+  BlockCoefficients
+  face_mean(const MeshGeometry<dim> &geometry,
+            const DoFMap<dim>       &dofs,
+            const unsigned int       c,
+            const unsigned int       f);
+
+  /** [[v]]_σ = v̄_{Kσ} − v̄_{Lσ} + v_{Kσ} on fracture face @p i. */
+  template <int dim>
+  BlockCoefficients
+  jump(const MeshGeometry<dim>    &geometry,
+       const DoFMap<dim>          &dofs,
+       const FractureNetwork<dim> &network,
+       const unsigned int          i);
+} // namespace PolyFrac
+
+#endif

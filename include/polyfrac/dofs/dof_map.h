@@ -1,0 +1,116 @@
+#ifndef polyfrac_dofs_dof_map_h
+#define polyfrac_dofs_dof_map_h
+
+#include <deal.II/base/types.h>
+
+#include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/polytopal_mesh.h>
+
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * FE-less numbering of the unknowns of the bubble-VEM scheme
+   * (scheme.md §3):
+   * - one vector unknown per *node side*: around each vertex s, the cells
+   *   containing s are partitioned into classes connected through
+   *   non-fracture faces; each class is one node side. A vertex off Γ has
+   *   one, a vertex inside one fracture two, a tip one, an L/T/X
+   *   intersection 2/3/4;
+   * - one vector bubble per fracture face, owned by its + cell;
+   * - one vector multiplier per fracture face (after all displacement
+   *   unknowns).
+   *
+   * Component c of node side n is dof dim n + c; of the bubble of
+   * fracture face i, dim (n_node_sides + i) + c.
+   *
+   * @code
+   *   DoFMap<dim> dofs(mesh, network);
+   *   const auto local = dofs.cell_dofs(c); // node sides, then bubbles
+   * @endcode
+   */
+  template <int dim>
+  class DoFMap
+  {
+  public:
+    /** A node side: its vertex and the cells of its class. */
+    struct NodeSide
+    {
+      unsigned int              vertex;
+      std::vector<unsigned int> cells;
+    };
+
+    DoFMap(const PolytopalMesh<dim> &mesh, const FractureNetwork<dim> &network);
+
+    unsigned int
+    n_node_sides() const
+    {
+      return node_sides.size();
+    }
+
+    unsigned int
+    n_bubbles() const
+    {
+      return n_fracture_faces;
+    }
+
+    /** Unknowns of the displacement: node sides and bubbles. */
+    types::global_dof_index
+    n_displacement_dofs() const
+    {
+      return dim * (n_node_sides() + n_bubbles());
+    }
+
+    types::global_dof_index
+    node_side_dof(const unsigned int node_side, const unsigned int c) const
+    {
+      return dim * node_side + c;
+    }
+
+    types::global_dof_index
+    bubble_dof(const unsigned int fracture_face, const unsigned int c) const
+    {
+      return dim * (n_node_sides() + fracture_face) + c;
+    }
+
+    types::global_dof_index
+    multiplier_dof(const unsigned int fracture_face, const unsigned int c) const
+    {
+      return n_displacement_dofs() + dim * fracture_face + c;
+    }
+
+    /** Node side of the local vertex @p i of cell @p c. */
+    unsigned int
+    node_side(const unsigned int c, const unsigned int i) const
+    {
+      return cell_node_sides[c][i];
+    }
+
+    /** The fracture faces whose bubble cell @p c carries (its + faces). */
+    const std::vector<unsigned int> &
+    cell_bubbles(const unsigned int c) const
+    {
+      return bubbles_of_cell[c];
+    }
+
+    /** Dofs of cell @p c: its node sides, then its bubbles, dim each. */
+    std::vector<types::global_dof_index>
+    cell_dofs(const unsigned int c) const;
+
+    /** Number of vertices with k node sides, for k = 0, 1, 2, ... */
+    std::vector<unsigned int>
+    node_side_histogram() const;
+
+    std::vector<NodeSide> node_sides;
+
+  private:
+    unsigned int                           n_fracture_faces;
+    std::vector<std::vector<unsigned int>> cell_node_sides;
+    std::vector<std::vector<unsigned int>> bubbles_of_cell;
+  };
+} // namespace PolyFrac
+
+#endif

@@ -1,0 +1,147 @@
+#ifndef polyfrac_fractures_fracture_network_h
+#define polyfrac_fractures_fracture_network_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/mesh/polytopal_mesh.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * A planar fracture: a segment A -> B (2D) or a planar convex polygon
+   * P1, P2, ... (3D), with its frame (scheme.md §3).
+   *
+   * Orientation: n^+ is the outward normal of the + side, pointing from the
+   * + side into the - side. 2D: n^+ = (-(B-A)_y, (B-A)_x)/|B-A| (the left
+   * normal of A -> B, so the + side lies to its right), τ = (B-A)/|B-A|.
+   * 3D: n^+ is the Newell normal of the loop, τ_1 is P2 - P1 normalised,
+   * τ_2 = n^+ x τ_1.
+   */
+  template <int dim>
+  struct Fracture
+  {
+    explicit Fracture(const std::vector<Point<dim>> &points);
+
+    /** Distance of @p p to the fracture (to the segment or the polygon). */
+    double
+    distance(const Point<dim> &p) const;
+
+    /** True if @p p lies on the plane (line) of the fracture within @p tol. */
+    bool
+    on_plane(const Point<dim> &p, const double tol) const;
+
+    /** True if @p p lies on the fracture's boundary (tips, polygon edges). */
+    bool
+    on_boundary(const Point<dim> &p, const double tol) const;
+
+    std::vector<Point<dim>>                points;
+    Tensor<1, dim>                         normal;
+    std::array<Tensor<1, dim>, dim - 1>    tangents;
+    double                                 measure;
+  };
+
+  /**
+   * The fracture network seen by the mesh: the fracture faces F_Γ with their
+   * + cell K and - cell L, and the frame of each.
+   *
+   * A mesh face is a fracture face when all its vertices lie on a fracture
+   * within 1e-10 h_σ. A fracture is resolved when its faces cover it (their
+   * total measure equals its measure, relative 1e-8); otherwise the
+   * constructor throws an error naming the fracture and the covered
+   * fraction. The + cell of a face is the one whose outward normal is n^+.
+   */
+  template <int dim>
+  class FractureNetwork
+  {
+  public:
+    /** One fracture face σ ∈ F_Γ. */
+    struct FractureFace
+    {
+      unsigned int face;
+      unsigned int fracture;
+      unsigned int plus_cell;
+      unsigned int minus_cell;
+      /** n^+ of this face (that of its fracture, or of its gmsh element). */
+      Tensor<1, dim> normal;
+    };
+
+    /** Locates the @p fractures in @p mesh (geometric matching). */
+    FractureNetwork(const std::vector<Fracture<dim>> &fractures,
+                    const MeshGeometry<dim>          &geometry);
+
+    /** A fracture face given explicitly (e.g. a gmsh fracture element). */
+    struct TaggedFace
+    {
+      unsigned int   face;
+      unsigned int   fracture;
+      Tensor<1, dim> normal;
+    };
+
+    /**
+     * Fracture faces given explicitly, as by gmsh physical tags: each of
+     * @p tagged_faces names its mesh face, its fracture (an index into
+     * @p names) and its n^+ (from the element's node order).
+     */
+    FractureNetwork(const std::vector<std::string> &names,
+                    const std::vector<TaggedFace>  &tagged_faces,
+                    const MeshGeometry<dim>        &geometry);
+
+    unsigned int
+    n_fracture_faces() const
+    {
+      return fracture_faces.size();
+    }
+
+    /** Index in fracture_faces of mesh face @p f, or invalid. */
+    unsigned int
+    fracture_face_of(const unsigned int f) const
+    {
+      return fracture_face_index[f];
+    }
+
+    /** Unit normal n^+ of fracture face @p i. */
+    const Tensor<1, dim> &
+    normal(const unsigned int i) const
+    {
+      return fracture_faces[i].normal;
+    }
+
+    unsigned int
+    n_fractures() const
+    {
+      return names.size();
+    }
+
+    /** Prints each fracture, its n^+ and its number of faces. */
+    void
+    print(std::ostream &out) const;
+
+    /** Geometric fractures (empty for tagged networks). */
+    std::vector<Fracture<dim>> fractures;
+    /** A readable name per fracture (its points, or its gmsh tag). */
+    std::vector<std::string>   names;
+    std::vector<FractureFace>  fracture_faces;
+
+  private:
+    void
+    add_face(const unsigned int    face,
+             const unsigned int    fracture,
+             const Tensor<1, dim> &normal);
+
+    void
+    check_resolution() const;
+
+    const MeshGeometry<dim>  &geometry;
+    std::vector<unsigned int> fracture_face_index;
+  };
+} // namespace PolyFrac
+
+#endif

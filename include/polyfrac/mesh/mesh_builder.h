@@ -1,0 +1,67 @@
+#ifndef polyfrac_mesh_mesh_builder_h
+#define polyfrac_mesh_mesh_builder_h
+
+#include <deal.II/grid/tria.h>
+
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/polytopal_mesh.h>
+
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The mesh pipeline of one refinement level (scheme.md §3-4, issue
+   * "Foundation"): a deal.II triangulation (generated box or gmsh), refined
+   * `Global refinements + level` times, then `Local refinements` times in
+   * the local refinement box; its polytopal view; vertex distortion; METIS
+   * agglomeration.
+   *
+   * Distortion and agglomeration never change the fracture geometry:
+   * fractures are located on the undistorted mesh; a vertex inside one
+   * fracture moves only within its plane; vertices on tips, fracture
+   * edges, intersections and the boundary stay; METIS never sees the
+   * links across fracture faces and no agglomerate contains a fracture
+   * face.
+   */
+  namespace MeshBuilder
+  {
+    /** Generated box (colorized: ids 0/1 at x min/max, 2/3 y, 4/5 z). */
+    template <int dim>
+    void
+    make_box(const Parameters &prm, const unsigned int level, Triangulation<dim> &tria);
+
+    /** Refines the cells whose centre lies in the closed box. */
+    template <int dim>
+    void
+    refine_in_box(const Parameters &prm, Triangulation<dim> &tria);
+
+    /**
+     * Moves the vertices of @p mesh (Distortion, Distortion type, Random
+     * seed), keeping the fracture geometry as described above.
+     * @p fracture_vertices flags the vertices of fracture faces that are
+     * not described by a planar Fracture (gmsh tags): those stay.
+     */
+    template <int dim>
+    void
+    distort(const Parameters                 &prm,
+            const std::vector<Fracture<dim>> &fractures,
+            const std::vector<bool>          &fixed_vertices,
+            PolytopalMesh<dim>               &mesh);
+
+    /**
+     * METIS partition into n_cells / Cells per polytope parts of the cell
+     * graph without the links across @p fracture_face, then agglomeration.
+     */
+    template <int dim>
+    PolytopalMesh<dim>
+    agglomerate(const Parameters         &prm,
+                const std::vector<bool>  &fracture_face,
+                const PolytopalMesh<dim> &mesh);
+  } // namespace MeshBuilder
+} // namespace PolyFrac
+
+#endif

@@ -1,0 +1,101 @@
+#ifndef polyfrac_physics_elasticity_h
+#define polyfrac_physics_elasticity_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/discretization/local_reconstruction.h>
+#include <polyfrac/dofs/dof_map.h>
+#include <polyfrac/fractures/fracture_network.h>
+
+#include <memory>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * Linear elasticity with the bubble-VEM scheme (scheme.md §5) and a
+   * prescribed load on the fractures:
+   *
+   *   Σ_K |K| σ_K(u):ε_K(v) + Σ_K (2μ+λ) S_K(u, v)
+   *     = Σ_K ∫_K f·Π^K v + Σ_{σ∈F_N} |σ| g_N(x̄_σ)·v̄_{Kσ}
+   *       − Σ_{σ∈F_Γ} |σ| (λ_σ + p_{f,σ} n^+)·[[v]]_σ,
+   *
+   * with λ_σ = λ(x̄_σ) (= −T^+) and p_{f,σ} = p_f(x̄_σ) from the parameter
+   * file, and u = g_D on the node sides of the Dirichlet boundary (each
+   * side takes the one-sided limit of g_D from its own cells).
+   *
+   * Linear solvers: UMFPACK, or CG with Trilinos ML AMG given the
+   * translation modes of the node-side unknowns.
+   */
+  template <int dim>
+  class Elasticity
+  {
+  public:
+    Elasticity(const Parameters           &prm,
+               const MeshGeometry<dim>    &geometry,
+               const FractureNetwork<dim> &network,
+               const DoFMap<dim>          &dofs);
+
+    /** Dirichlet constraints, sparsity, matrix and right-hand side. */
+    void
+    assemble();
+
+    /** Solves; returns the number of linear iterations (0 for UMFPACK). */
+    unsigned int
+    solve();
+
+    /** Unknowns of the linear system: displacement dofs not fixed by Dirichlet data. */
+    types::global_dof_index
+    n_unknowns() const
+    {
+      return dofs.n_displacement_dofs() - constraints.n_constraints();
+    }
+
+    /** Local values of cell @p c (node sides, then bubbles). */
+    std::vector<Tensor<1, dim>>
+    local_values(const unsigned int c) const;
+
+    /** [[u_D]]_σ on fracture face @p i. */
+    Tensor<1, dim>
+    jump_value(const unsigned int i) const;
+
+    /** σ_K = 2μ ε_K + λ div_K I of cell @p c. */
+    Tensor<2, dim>
+    stress(const unsigned int c) const;
+
+    /** Prescribed fracture load λ(x̄_σ) on fracture face @p i. */
+    Tensor<1, dim>
+    fracture_traction(const unsigned int i) const;
+
+    Vector<double> solution;
+
+  private:
+    void
+    make_constraints();
+
+    FullMatrix<double>
+    local_stiffness(const LocalReconstruction<dim> &local) const;
+
+    const Parameters           &prm;
+    const MeshGeometry<dim>    &geometry;
+    const FractureNetwork<dim> &network;
+    const DoFMap<dim>          &dofs;
+
+    std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
+      fracture_pressure, traction;
+
+    AffineConstraints<double> constraints;
+    SparsityPattern           sparsity;
+    SparseMatrix<double>      matrix;
+    Vector<double>            rhs;
+  };
+} // namespace PolyFrac
+
+#endif

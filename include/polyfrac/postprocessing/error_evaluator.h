@@ -1,0 +1,43 @@
+#ifndef polyfrac_postprocessing_error_evaluator_h
+#define polyfrac_postprocessing_error_evaluator_h
+
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/physics/elasticity.h>
+
+#include <optional>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /** A relative error, or an absolute one where the exact field vanishes. */
+  struct ErrorValue
+  {
+    double value;
+    bool   absolute;
+  };
+
+  /**
+   * The error measures of scheme.md §8 (the columns of convergence.csv),
+   * each present only when its exact field is given:
+   * - err_u = ‖u − Π^D u_D‖ / ‖u‖ and err_grad_u = ‖∇u − ∇^D u_D‖ / ‖∇u‖,
+   *   integrated on the fan sub-simplices with a degree-2 interior rule
+   *   (∇u by central differences);
+   * - err_jump = (Σ_σ |σ| |[u](x̄_σ) − [[u_D]]_σ|²)^{1/2} / (Σ_σ |σ| |[u](x̄_σ)|²)^{1/2}.
+   * Where a denominator is below 1e-14 the absolute error is reported.
+   */
+  struct Errors
+  {
+    std::optional<ErrorValue> u, grad_u, jump, lambda_hm12, lambda_l2;
+  };
+
+  template <int dim>
+  Errors
+  compute_errors(const Parameters           &prm,
+                 const MeshGeometry<dim>    &geometry,
+                 const FractureNetwork<dim> &network,
+                 const DoFMap<dim>          &dofs,
+                 const Elasticity<dim>      &elasticity);
+} // namespace PolyFrac
+
+#endif

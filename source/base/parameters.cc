@@ -1,0 +1,565 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <polyfrac/base/parameters.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    std::string
+    zero_vector(const unsigned int dim)
+    {
+      return dim == 2 ? "0; 0" : "0; 0; 0";
+    }
+
+    std::string
+    repeated(const std::string &value, const unsigned int dim)
+    {
+      std::string result = value;
+      for (unsigned int d = 1; d < dim; ++d)
+        result += ", " + value;
+      return result;
+    }
+
+    /** Parses "x, y[, z]" into a Point<3> (unused components zero). */
+    Point<3>
+    parse_point(const std::string &text,
+                const unsigned int dim,
+                const std::string &where)
+    {
+      const std::vector<std::string> parts =
+        Utilities::split_string_list(text, ',');
+      AssertThrow(parts.size() == dim,
+                  ExcMessage(where + ": the point <" + text + "> has " +
+                             std::to_string(parts.size()) +
+                             " coordinates, expected " + std::to_string(dim) +
+                             " (comma separated)."));
+      Point<3> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          try
+            {
+              p[d] = Utilities::string_to_double(parts[d]);
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage(where + ": <" + parts[d] +
+                                     "> is not a number."));
+            }
+        }
+      return p;
+    }
+
+    /** Parses "p : p : p ; p : p ..." into lists of points. */
+    std::vector<std::vector<Point<3>>>
+    parse_point_lists(const std::string &text,
+                      const unsigned int dim,
+                      const std::string &where)
+    {
+      std::vector<std::vector<Point<3>>> result;
+      for (const std::string &item : Utilities::split_string_list(text, ';'))
+        {
+          if (item.empty())
+            continue;
+          std::vector<Point<3>> points;
+          for (const std::string &p : Utilities::split_string_list(item, ':'))
+            points.push_back(parse_point(p, dim, where));
+          result.push_back(points);
+        }
+      return result;
+    }
+  } // namespace
+
+
+
+  unsigned int
+  Parameters::read_dimension(const std::string &file_name)
+  {
+    std::ifstream in(file_name);
+    AssertThrow(in,
+                ExcMessage("Cannot open the parameter file <" + file_name +
+                           ">: check the path."));
+    const std::regex pattern(R"(^\s*set\s+Dimension\s*=\s*(\S+)\s*(#.*)?$)");
+    std::string      line;
+    unsigned int     dim = 2;
+    while (std::getline(in, line))
+      {
+        std::smatch match;
+        if (std::regex_match(line, match, pattern))
+          {
+            AssertThrow(match[1] == "2" || match[1] == "3",
+                        ExcMessage("In <" + file_name +
+                                   ">: entry <Dimension> must be 2 or 3, not <" +
+                                   std::string(match[1]) + ">."));
+            dim = std::stoi(match[1]);
+          }
+      }
+    return dim;
+  }
+
+
+
+  Parameters::Parameters(const unsigned int dim)
+    : dim(dim)
+  {
+    declare(prm, dim);
+    read_values();
+  }
+
+
+
+  void
+  Parameters::declare(ParameterHandler &prm, const unsigned int dim)
+  {
+    prm.declare_entry("Dimension",
+                      std::to_string(dim),
+                      Patterns::Integer(2, 3),
+                      "Spatial dimension, 2 or 3. Read before everything "
+                      "else: vector entries then expect this many components.");
+
+    prm.enter_subsection("Expressions");
+    prm.declare_entry("Function constants",
+                      "",
+                      Patterns::Map(Patterns::Anything(),
+                                    Patterns::Double(),
+                                    0,
+                                    Patterns::Map::max_int_value,
+                                    ",",
+                                    "="),
+                      "Constants usable in every expression entry, e.g. "
+                      "<c=1, g=1>.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Model");
+    prm.declare_entry("Model",
+                      "elasticity",
+                      Patterns::Selection(
+                        "elasticity|contact mechanics|poromechanics"),
+                      "Physics of the scene. elasticity: linear elasticity with "
+                      "a prescribed load on the fractures (pressure and "
+                      "traction).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Source",
+                      "hyper rectangle",
+                      Patterns::Selection("hyper rectangle|gmsh"),
+                      "Where the deal.II triangulation comes from.");
+    prm.declare_entry("Cell type",
+                      "hypercube",
+                      Patterns::Selection("hypercube|simplex"),
+                      "Cells of a generated mesh: quadrilaterals/hexahedra or "
+                      "triangles/tetrahedra.");
+    prm.declare_entry("Lower left corner",
+                      repeated("-1", dim),
+                      Patterns::List(Patterns::Double(), dim, dim, ","),
+                      "Lower left corner of the generated box.");
+    prm.declare_entry("Upper right corner",
+                      repeated("1", dim),
+                      Patterns::List(Patterns::Double(), dim, dim, ","),
+                      "Upper right corner of the generated box.");
+    prm.declare_entry("Subdivisions",
+                      repeated("8", dim),
+                      Patterns::List(Patterns::Integer(1), dim, dim, ","),
+                      "Cells per direction of the generated box (before "
+                      "refinement).");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Global refinements of the base mesh (level 0).");
+    prm.declare_entry("Local refinement box",
+                      repeated("-0.5", dim) + " : " + repeated("0.5", dim),
+                      Patterns::Anything(),
+                      "Closed box <lower : upper>; cells whose centre lies in it "
+                      "are refined <Local refinements> more times.");
+    prm.declare_entry("Local refinements",
+                      "0",
+                      Patterns::Integer(0, 8),
+                      "Extra refinements of the cells in the local refinement "
+                      "box. Hanging nodes become polytope vertices.");
+    prm.declare_entry("Distortion",
+                      "0",
+                      Patterns::Double(0, 0.4),
+                      "Vertex perturbation as a fraction of the local mesh "
+                      "size. Fracture, boundary, tip and intersection vertices "
+                      "are kept where the geometry requires.");
+    prm.declare_entry("Distortion type",
+                      "random",
+                      Patterns::Selection("random|smooth"),
+                      "random: independent perturbation of each vertex. smooth: "
+                      "a sine map (Kershaw-like) that bends faces.");
+    prm.declare_entry("Random seed",
+                      "0",
+                      Patterns::Integer(0),
+                      "Seed of the random distortion (results are repeatable).");
+    prm.declare_entry("Cells per polytope",
+                      "1",
+                      Patterns::Integer(1),
+                      "> 1: agglomerate this many fine cells per polytope with "
+                      "METIS (never across a fracture face).");
+    prm.declare_entry("File name",
+                      "",
+                      Patterns::Anything(),
+                      "gmsh mesh (.msh) for Source = gmsh; relative paths are "
+                      "taken from the parameter file's directory.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Fractures");
+    prm.declare_entry("Segments",
+                      "",
+                      Patterns::Anything(),
+                      "2D fractures: <x1,y1 : x2,y2 ; ...>. n+ is the left "
+                      "normal of A->B; the + side lies to the right of A->B.");
+    prm.declare_entry("Polygons",
+                      "",
+                      Patterns::Anything(),
+                      "3D fractures, planar convex polygons: <x,y,z : x,y,z : "
+                      "x,y,z ... ; next ...>. n+ is the Newell normal of the "
+                      "vertex loop.");
+    prm.declare_entry("Gmsh physical tags",
+                      "",
+                      Patterns::List(Patterns::Integer()),
+                      "Physical tags of the fracture elements of a gmsh mesh.");
+    prm.declare_entry("Pressure",
+                      "0",
+                      Patterns::Anything(),
+                      "Fracture pressure p_f (expression in x, y[, z], t).");
+    prm.declare_entry("Traction",
+                      zero_vector(dim),
+                      Patterns::Anything(),
+                      "Prescribed multiplier lambda = -T+ in global components "
+                      "(Model = elasticity), expressions separated by ';'.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    prm.declare_entry("Lame lambda",
+                      "1",
+                      Patterns::Double(0),
+                      "First Lame coefficient.");
+    prm.declare_entry("Lame mu",
+                      "1",
+                      Patterns::Double(1e-300),
+                      "Shear modulus.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Body force");
+    prm.declare_entry("Function expression",
+                      zero_vector(dim),
+                      Patterns::Anything(),
+                      "Body force f, expressions separated by ';'.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Dirichlet expression",
+                      zero_vector(dim),
+                      Patterns::Anything(),
+                      "Displacement on the Dirichlet boundary; evaluated "
+                      "side-wise at fracture nodes.");
+    prm.declare_entry("Dirichlet boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Empty: every boundary id not listed as Neumann.");
+    prm.declare_entry("Neumann boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids carrying the Neumann traction.");
+    prm.declare_entry("Neumann traction",
+                      zero_vector(dim),
+                      Patterns::Anything(),
+                      "Total stress times outward normal on the Neumann faces, "
+                      "global components.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Exact solution");
+    prm.declare_entry("Displacement",
+                      "",
+                      Patterns::Anything(),
+                      "Exact u (adds err_u and err_grad_u).");
+    prm.declare_entry("Displacement jump",
+                      "",
+                      Patterns::Anything(),
+                      "Exact [u] = u+ - u- on the fractures, global components "
+                      "(adds err_jump).");
+    prm.declare_entry("Contact traction",
+                      "",
+                      Patterns::Anything(),
+                      "Exact lambda on the fractures, global components (adds "
+                      "err_lambda_l2 and err_lambda_hm12).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Convergence study");
+    prm.declare_entry("Number of refinement levels",
+                      "1",
+                      Patterns::Integer(1, 12),
+                      "Level k: base mesh refined k more times globally, then "
+                      "local refinement, distortion and agglomeration.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Method",
+                      "direct",
+                      Patterns::Selection("direct|AMG"),
+                      "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
+                      "with the rigid-body modes.");
+    prm.declare_entry("Tolerance",
+                      "1e-12",
+                      Patterns::Double(0),
+                      "Relative residual of the iterative solver.");
+    prm.declare_entry("Maximum iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Iteration limit of the iterative solver.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Where VTU files, convergence.csv and the used parameters "
+                      "go (created if missing).");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Patterns::Bool(),
+                      "Write the matrix and fracture VTU files of each level.");
+    prm.declare_entry("Print timings",
+                      "true",
+                      Patterns::Bool(),
+                      "Print wall times on screen (tests switch this off; "
+                      "convergence.csv always has them).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Parameters::parse(const std::string &name)
+  {
+    file_name = name;
+    std::ifstream in(file_name);
+    AssertThrow(in,
+                ExcMessage("Cannot open the parameter file <" + file_name +
+                           ">: check the path."));
+    try
+      {
+        prm.parse_input(in, file_name);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        AssertThrow(false,
+                    ExcMessage("Invalid parameter file: " +
+                               Utilities::trim(info.str())));
+      }
+    read_values();
+  }
+
+
+
+  std::string
+  Parameters::checked_vector_expression(const std::string &entry,
+                                        const std::string &expression) const
+  {
+    const std::string trimmed = Utilities::trim(expression);
+    if (trimmed == "0")
+      return zero_vector(dim);
+    const unsigned int n = Utilities::split_string_list(trimmed, ';').size();
+    AssertThrow(n == dim,
+                ExcMessage("In <" + file_name + ">: entry <" + entry +
+                           "> has " + std::to_string(n) +
+                           " components, expected " + std::to_string(dim) +
+                           " separated by ';' (or the single value 0)."));
+    return trimmed;
+  }
+
+
+
+  void
+  Parameters::read_values()
+  {
+    dim = prm.get_integer("Dimension");
+
+    prm.enter_subsection("Expressions");
+    constants.clear();
+    for (const std::string &pair :
+         Utilities::split_string_list(prm.get("Function constants"), ','))
+      {
+        const std::vector<std::string> key_value =
+          Utilities::split_string_list(pair, '=');
+        constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Model");
+    model = prm.get("Model");
+    prm.leave_subsection();
+
+    const std::string where = "In <" + file_name + ">, subsection <Mesh>";
+    prm.enter_subsection("Mesh");
+    mesh.source    = prm.get("Source");
+    mesh.cell_type = prm.get("Cell type");
+    mesh.lower_left =
+      parse_point(prm.get("Lower left corner"), dim, where + " <Lower left>");
+    mesh.upper_right =
+      parse_point(prm.get("Upper right corner"), dim, where + " <Upper right>");
+    for (unsigned int d = 0; d < dim; ++d)
+      AssertThrow(mesh.lower_left[d] < mesh.upper_right[d],
+                  ExcMessage(where + ": <Lower left corner> must be below "
+                                     "<Upper right corner> in every "
+                                     "coordinate."));
+    mesh.subdivisions.clear();
+    for (const std::string &s :
+         Utilities::split_string_list(prm.get("Subdivisions")))
+      mesh.subdivisions.push_back(Utilities::string_to_int(s));
+    mesh.global_refinements = prm.get_integer("Global refinements");
+    {
+      const std::vector<std::vector<Point<3>>> box =
+        parse_point_lists(prm.get("Local refinement box"),
+                          dim,
+                          where + " <Local refinement box>");
+      AssertThrow(box.size() == 1 && box[0].size() == 2,
+                  ExcMessage(where +
+                             ": <Local refinement box> must read "
+                             "<lower corner : upper corner>."));
+      mesh.box_lower = box[0][0];
+      mesh.box_upper = box[0][1];
+    }
+    mesh.local_refinements  = prm.get_integer("Local refinements");
+    mesh.distortion         = prm.get_double("Distortion");
+    mesh.distortion_type    = prm.get("Distortion type");
+    mesh.random_seed        = prm.get_integer("Random seed");
+    mesh.cells_per_polytope = prm.get_integer("Cells per polytope");
+    mesh.file_name          = prm.get("File name");
+    prm.leave_subsection();
+    if (mesh.source == "gmsh")
+      {
+        AssertThrow(!mesh.file_name.empty(),
+                    ExcMessage(where + ": <Source = gmsh> needs <File name>."));
+        if (mesh.file_name[0] != '/' && file_name.find('/') != std::string::npos)
+          mesh.file_name =
+            file_name.substr(0, file_name.rfind('/') + 1) + mesh.file_name;
+        AssertThrow(std::ifstream(mesh.file_name).good(),
+                    ExcMessage(where + ": the mesh file <" + mesh.file_name +
+                               "> cannot be opened."));
+      }
+
+    prm.enter_subsection("Fractures");
+    const std::string fwhere = "In <" + file_name + ">, subsection <Fractures>";
+    fractures.geometries =
+      parse_point_lists(prm.get(dim == 2 ? "Segments" : "Polygons"),
+                        dim,
+                        fwhere);
+    for (unsigned int i = 0; i < fractures.geometries.size(); ++i)
+      AssertThrow((dim == 2 && fractures.geometries[i].size() == 2) ||
+                    (dim == 3 && fractures.geometries[i].size() >= 3),
+                  ExcMessage(fwhere + ": fracture " + std::to_string(i) +
+                             (dim == 2 ? " must be a segment <A : B>." :
+                                         " must be a polygon of at least 3 "
+                                         "points.")));
+    if (!prm.get(dim == 2 ? "Polygons" : "Segments").empty())
+      warnings.push_back(std::string(dim == 2 ? "Polygons" : "Segments") +
+                         " is ignored in dimension " + std::to_string(dim));
+    fractures.gmsh_physical_tags.clear();
+    for (const std::string &s :
+         Utilities::split_string_list(prm.get("Gmsh physical tags")))
+      fractures.gmsh_physical_tags.push_back(Utilities::string_to_int(s));
+    fractures.pressure = prm.get("Pressure");
+    fractures.traction =
+      checked_vector_expression("Fractures/Traction", prm.get("Traction"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    lame_lambda = prm.get_double("Lame lambda");
+    lame_mu     = prm.get_double("Lame mu");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Body force");
+    body_force = checked_vector_expression("Body force/Function expression",
+                                           prm.get("Function expression"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    boundary.dirichlet_expression =
+      checked_vector_expression("Boundary conditions/Dirichlet expression",
+                                prm.get("Dirichlet expression"));
+    boundary.dirichlet_ids.clear();
+    boundary.neumann_ids.clear();
+    for (const std::string &s :
+         Utilities::split_string_list(prm.get("Dirichlet boundary ids")))
+      boundary.dirichlet_ids.push_back(Utilities::string_to_int(s));
+    for (const std::string &s :
+         Utilities::split_string_list(prm.get("Neumann boundary ids")))
+      boundary.neumann_ids.push_back(Utilities::string_to_int(s));
+    boundary.neumann_traction =
+      checked_vector_expression("Boundary conditions/Neumann traction",
+                                prm.get("Neumann traction"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Exact solution");
+    exact.displacement = prm.get("Displacement");
+    if (!exact.displacement.empty())
+      exact.displacement =
+        checked_vector_expression("Exact solution/Displacement",
+                                  exact.displacement);
+    exact.displacement_jump = prm.get("Displacement jump");
+    if (!exact.displacement_jump.empty())
+      exact.displacement_jump =
+        checked_vector_expression("Exact solution/Displacement jump",
+                                  exact.displacement_jump);
+    exact.contact_traction = prm.get("Contact traction");
+    if (!exact.contact_traction.empty())
+      exact.contact_traction =
+        checked_vector_expression("Exact solution/Contact traction",
+                                  exact.contact_traction);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Convergence study");
+    n_refinement_levels = prm.get_integer("Number of refinement levels");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Linear solver");
+    solver.method         = prm.get("Method");
+    solver.tolerance      = prm.get_double("Tolerance");
+    solver.max_iterations = prm.get_integer("Maximum iterations");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output.directory     = prm.get("Output directory");
+    output.write_vtu     = prm.get_bool("Write VTU");
+    output.print_timings = prm.get_bool("Print timings");
+    prm.leave_subsection();
+
+    if (model == "elasticity" && !exact.contact_traction.empty())
+      warnings.push_back("Exact solution/Contact traction is not used by "
+                         "Model = elasticity (the traction is prescribed)");
+    AssertThrow(model == "elasticity" || file_name.empty(),
+                ExcMessage("In <" + file_name + ">: Model = " + model +
+                           " is not available in this version of PolyFrac; "
+                           "use Model = elasticity."));
+  }
+
+
+
+  void
+  Parameters::write_used_parameters(const std::string &name) const
+  {
+    std::ofstream out(name);
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+
+
+
+  void
+  Parameters::print_defaults(const unsigned int dim, std::ostream &out)
+  {
+    ParameterHandler handler;
+    declare(handler, dim);
+    handler.print_parameters(out, ParameterHandler::PRM);
+  }
+} // namespace PolyFrac

@@ -1,0 +1,292 @@
+#include <deal.II/base/exceptions.h>
+
+#include <polyfrac/discretization/geometry.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <ostream>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    template <int dim>
+    Point<dim>
+    loop_average(const std::vector<Point<dim>>   &vertices,
+                 const std::vector<unsigned int> &loop)
+    {
+      Point<dim> average;
+      for (const unsigned int v : loop)
+        average += vertices[v];
+      return average / static_cast<double>(loop.size());
+    }
+
+    /** (a - c) x (b - c) / 2 in 3D. */
+    Tensor<1, 3>
+    triangle_area(const Point<3> &a, const Point<3> &b, const Point<3> &c)
+    {
+      return 0.5 * cross_product_3d(a - c, b - c);
+    }
+
+    template <int dim>
+    double
+    diameter_of(const std::vector<Point<dim>>   &vertices,
+                const std::vector<unsigned int> &list)
+    {
+      double h = 0;
+      for (unsigned int i = 0; i < list.size(); ++i)
+        for (unsigned int j = i + 1; j < list.size(); ++j)
+          h = std::max(h, vertices[list[i]].distance(vertices[list[j]]));
+      return h;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  face_vector_area(const std::vector<Point<dim>>   &vertices,
+                   const std::vector<unsigned int> &loop)
+  {
+    Tensor<1, dim> area;
+    if constexpr (dim == 2)
+      {
+        const Tensor<1, 2> edge = vertices[loop[1]] - vertices[loop[0]];
+        area[0]                 = edge[1];
+        area[1]                 = -edge[0];
+      }
+    else
+      {
+        const Point<3> center = loop_average(vertices, loop);
+        for (unsigned int i = 0; i < loop.size(); ++i)
+          area += triangle_area(vertices[loop[i]],
+                                vertices[loop[(i + 1) % loop.size()]],
+                                center);
+      }
+    return area;
+  }
+
+
+
+  template <int dim>
+  std::vector<FanPiece<dim>>
+  face_fan(const std::vector<Point<dim>>   &vertices,
+           const std::vector<unsigned int> &loop,
+           const double                     sign)
+  {
+    if constexpr (dim == 2)
+      return {{sign * face_vector_area(vertices, loop), {0.5, 0.5}}};
+    else
+      {
+        const unsigned int         n      = loop.size();
+        const Point<3>             center = loop_average(vertices, loop);
+        std::vector<FanPiece<dim>> pieces(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            pieces[i].area =
+              sign * triangle_area(vertices[loop[i]],
+                                   vertices[loop[(i + 1) % n]],
+                                   center);
+            pieces[i].weights.assign(n, 1. / (3. * n));
+            pieces[i].weights[i] += 1. / 3.;
+            pieces[i].weights[(i + 1) % n] += 1. / 3.;
+          }
+        return pieces;
+      }
+  }
+
+
+
+  template <int dim>
+  MeshGeometry<dim>::MeshGeometry(const PolytopalMesh<dim> &mesh)
+    : mesh(mesh)
+    , faces(mesh.n_faces())
+    , cells(mesh.n_cells())
+  {
+    const auto &x = mesh.vertices;
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      {
+        const std::vector<unsigned int> &loop = mesh.faces[f].vertices;
+        FaceGeometry<dim>               &geo  = faces[f];
+        geo.vector_area = face_vector_area(x, loop);
+        geo.measure     = geo.vector_area.norm();
+        AssertThrow(geo.measure > 0,
+                    ExcMessage("A face of the mesh has zero measure."));
+        geo.normal   = geo.vector_area / geo.measure;
+        geo.diameter = diameter_of(x, loop);
+        geo.weights.assign(loop.size(), 0.);
+        for (const FanPiece<dim> &piece : face_fan(x, loop, 1.))
+          {
+            const double signed_area = piece.area * geo.normal;
+            for (unsigned int i = 0; i < loop.size(); ++i)
+              geo.weights[i] += signed_area * piece.weights[i];
+          }
+        geo.centroid = Point<dim>();
+        for (unsigned int i = 0; i < loop.size(); ++i)
+          {
+            geo.weights[i] /= geo.measure;
+            geo.centroid += geo.weights[i] * x[loop[i]];
+          }
+      }
+
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto         &cell = mesh.cells[c];
+        CellGeometry<dim>  &geo  = cells[c];
+        const unsigned int  n_K  = cell.vertices.size();
+        geo.vertex_average       = loop_average(x, cell.vertices);
+        geo.diameter             = diameter_of(x, cell.vertices);
+        geo.measure              = 0;
+        geo.weights.assign(n_K, 0.);
+        geo.gradients.assign(n_K, Tensor<1, dim>());
+        for (const unsigned int f : cell.faces)
+          {
+            const std::vector<unsigned int> &loop = mesh.faces[f].vertices;
+            const std::vector<FanPiece<dim>> fan =
+              face_fan(x, loop, mesh.orientation(c, f));
+            for (unsigned int e = 0; e < fan.size(); ++e)
+              {
+                // Signed measure of the sub-simplex (piece, x^v_K); the
+                // weights of its vertices: those of the piece for the face
+                // part, 1/n_K each for the apex x^v_K.
+                const double volume =
+                  fan[e].area * (x[loop[e]] - geo.vertex_average) / dim;
+                geo.measure += volume;
+                for (unsigned int i = 0; i < loop.size(); ++i)
+                  {
+                    const unsigned int s = local_vertex(c, loop[i]);
+                    geo.gradients[s] += fan[e].weights[i] * fan[e].area;
+                    geo.weights[s] +=
+                      volume * dim / (dim + 1.) * fan[e].weights[i];
+                  }
+                for (unsigned int s = 0; s < n_K; ++s)
+                  geo.weights[s] += volume / (dim + 1.) / n_K;
+              }
+          }
+        AssertThrow(geo.measure > 0,
+                    ExcMessage("Cell " + std::to_string(c) +
+                               " has a non-positive measure: the mesh is "
+                               "inverted (reduce Mesh/Distortion)."));
+        geo.centroid = Point<dim>();
+        for (unsigned int s = 0; s < n_K; ++s)
+          {
+            geo.weights[s] /= geo.measure;
+            geo.gradients[s] /= geo.measure;
+            geo.centroid += geo.weights[s] * x[cell.vertices[s]];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshGeometry<dim>::local_vertex(const unsigned int c,
+                                  const unsigned int v) const
+  {
+    const std::vector<unsigned int> &list = mesh.cells[c].vertices;
+    const auto it = std::lower_bound(list.begin(), list.end(), v);
+    Assert(it != list.end() && *it == v, ExcInternalError());
+    return it - list.begin();
+  }
+
+
+
+  template <int dim>
+  std::vector<QuadraturePoint<dim>>
+  MeshGeometry<dim>::quadrature(const unsigned int c) const
+  {
+    const auto                       &x = mesh.vertices;
+    std::vector<QuadraturePoint<dim>> points;
+    for (const unsigned int f : mesh.cells[c].faces)
+      {
+        const std::vector<unsigned int> &loop = mesh.faces[f].vertices;
+        const std::vector<FanPiece<dim>> fan =
+          face_fan(x, loop, mesh.orientation(c, f));
+        for (unsigned int e = 0; e < fan.size(); ++e)
+          {
+            std::vector<Point<dim>> simplex;
+            if constexpr (dim == 2)
+              simplex = {x[loop[0]], x[loop[1]]};
+            else
+              simplex = {x[loop[e]],
+                         x[loop[(e + 1) % loop.size()]],
+                         loop_average(x, loop)};
+            simplex.push_back(cells[c].vertex_average);
+            const double volume =
+              fan[e].area * (x[loop[e]] - cells[c].vertex_average) / dim;
+            // Interior degree-2 rules: triangle (2/3, 1/6, 1/6), tetrahedron
+            // (a, b, b, b) with a = 0.5854..., b = 0.1381...
+            const double a = dim == 2 ? 2. / 3. : 0.5854101966249685;
+            const double b = dim == 2 ? 1. / 6. : 0.1381966011250105;
+            for (unsigned int i = 0; i <= dim; ++i)
+              {
+                Point<dim> p;
+                for (unsigned int j = 0; j <= dim; ++j)
+                  p += (i == j ? a : b) * simplex[j];
+                points.push_back({p, volume / (dim + 1)});
+              }
+          }
+      }
+    return points;
+  }
+
+
+
+  template <int dim>
+  double
+  MeshGeometry<dim>::max_diameter() const
+  {
+    double h = 0;
+    for (const auto &cell : cells)
+      h = std::max(h, cell.diameter);
+    return h;
+  }
+
+
+
+  template <int dim>
+  void
+  MeshGeometry<dim>::print_quality(std::ostream &out) const
+  {
+    double       min_face_weight = 1, min_cell_weight = 1;
+    unsigned int min_faces = numbers::invalid_unsigned_int, max_faces = 0;
+    double       sum_faces = 0;
+    for (const auto &face : faces)
+      for (const double w : face.weights)
+        min_face_weight = std::min(min_face_weight, w);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        for (const double w : cells[c].weights)
+          min_cell_weight = std::min(min_cell_weight, w);
+        const unsigned int n = mesh.cells[c].faces.size();
+        min_faces            = std::min(min_faces, n);
+        max_faces            = std::max(max_faces, n);
+        sum_faces += n;
+      }
+    out << "Mesh quality: " << cells.size() << " cells, " << faces.size()
+        << " faces; faces per cell " << min_faces << ".." << max_faces
+        << " (mean " << std::setprecision(4) << sum_faces / cells.size()
+        << "); largest h_K " << max_diameter() << "; smallest weight: face "
+        << min_face_weight << ", cell " << min_cell_weight << std::endl;
+  }
+
+
+
+  template Tensor<1, 2>
+  face_vector_area(const std::vector<Point<2>> &,
+                   const std::vector<unsigned int> &);
+  template Tensor<1, 3>
+  face_vector_area(const std::vector<Point<3>> &,
+                   const std::vector<unsigned int> &);
+  template std::vector<FanPiece<2>>
+  face_fan(const std::vector<Point<2>> &,
+           const std::vector<unsigned int> &,
+           const double);
+  template std::vector<FanPiece<3>>
+  face_fan(const std::vector<Point<3>> &,
+           const std::vector<unsigned int> &,
+           const double);
+  template class MeshGeometry<2>;
+  template class MeshGeometry<3>;
+} // namespace PolyFrac

@@ -1,0 +1,103 @@
+#include <polyfrac/dofs/dof_map.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+namespace PolyFrac
+{
+  template <int dim>
+  DoFMap<dim>::DoFMap(const PolytopalMesh<dim>    &mesh,
+                      const FractureNetwork<dim> &network)
+    : n_fracture_faces(network.n_fracture_faces())
+    , cell_node_sides(mesh.n_cells())
+    , bubbles_of_cell(mesh.n_cells())
+  {
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      cell_node_sides[c].assign(mesh.cells[c].vertices.size(),
+                                numbers::invalid_unsigned_int);
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      bubbles_of_cell[network.fracture_faces[i].plus_cell].push_back(i);
+
+    const auto vertex_cells = mesh.vertex_to_cells();
+    const auto vertex_faces = mesh.vertex_to_faces();
+    for (unsigned int v = 0; v < mesh.vertices.size(); ++v)
+      {
+        const std::vector<unsigned int> &cells = vertex_cells[v];
+        if (cells.empty())
+          continue;
+        // Union-find over the cells around v, joined through the
+        // non-fracture faces that contain v.
+        std::map<unsigned int, unsigned int> position;
+        for (unsigned int i = 0; i < cells.size(); ++i)
+          position[cells[i]] = i;
+        std::vector<unsigned int> root(cells.size());
+        std::iota(root.begin(), root.end(), 0u);
+        const auto find = [&root](unsigned int i) {
+          while (root[i] != i)
+            i = root[i] = root[root[i]];
+          return i;
+        };
+        for (const unsigned int f : vertex_faces[v])
+          if (!mesh.faces[f].at_boundary() &&
+              network.fracture_face_of(f) == numbers::invalid_unsigned_int)
+            root[find(position[mesh.faces[f].cells[0]])] =
+              find(position[mesh.faces[f].cells[1]]);
+
+        std::map<unsigned int, unsigned int> side_of_root;
+        for (unsigned int i = 0; i < cells.size(); ++i)
+          {
+            const auto [it, inserted] =
+              side_of_root.emplace(find(i), node_sides.size());
+            if (inserted)
+              node_sides.push_back({v, {}});
+            node_sides[it->second].cells.push_back(cells[i]);
+            const auto &list = mesh.cells[cells[i]].vertices;
+            const unsigned int local =
+              std::lower_bound(list.begin(), list.end(), v) - list.begin();
+            cell_node_sides[cells[i]][local] = it->second;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  DoFMap<dim>::cell_dofs(const unsigned int c) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    dofs.reserve(dim * (cell_node_sides[c].size() + bubbles_of_cell[c].size()));
+    for (const unsigned int n : cell_node_sides[c])
+      for (unsigned int d = 0; d < dim; ++d)
+        dofs.push_back(node_side_dof(n, d));
+    for (const unsigned int b : bubbles_of_cell[c])
+      for (unsigned int d = 0; d < dim; ++d)
+        dofs.push_back(bubble_dof(b, d));
+    return dofs;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  DoFMap<dim>::node_side_histogram() const
+  {
+    std::map<unsigned int, unsigned int> per_vertex;
+    for (const NodeSide &side : node_sides)
+      ++per_vertex[side.vertex];
+    std::vector<unsigned int> histogram;
+    for (const auto &[vertex, count] : per_vertex)
+      {
+        if (histogram.size() <= count)
+          histogram.resize(count + 1, 0);
+        ++histogram[count];
+      }
+    return histogram;
+  }
+
+
+
+  template class DoFMap<2>;
+  template class DoFMap<3>;
+} // namespace PolyFrac

@@ -1,0 +1,314 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <polyfrac/base/expressions.h>
+#include <polyfrac/physics/elasticity.h>
+
+#include <algorithm>
+#include <set>
+
+namespace PolyFrac
+{
+  template <int dim>
+  Elasticity<dim>::Elasticity(const Parameters           &prm,
+                              const MeshGeometry<dim>    &geometry,
+                              const FractureNetwork<dim> &network,
+                              const DoFMap<dim>          &dofs)
+    : prm(prm)
+    , geometry(geometry)
+    , network(network)
+    , dofs(dofs)
+    , body_force(make_expression<dim>("Body force/Function expression",
+                                      prm.body_force,
+                                      dim,
+                                      prm.constants))
+    , dirichlet(make_expression<dim>("Boundary conditions/Dirichlet expression",
+                                     prm.boundary.dirichlet_expression,
+                                     dim,
+                                     prm.constants))
+    , neumann(make_expression<dim>("Boundary conditions/Neumann traction",
+                                   prm.boundary.neumann_traction,
+                                   dim,
+                                   prm.constants))
+    , fracture_pressure(make_expression<dim>("Fractures/Pressure",
+                                             prm.fractures.pressure,
+                                             1,
+                                             prm.constants))
+    , traction(make_expression<dim>("Fractures/Traction",
+                                    prm.fractures.traction,
+                                    dim,
+                                    prm.constants))
+  {}
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::make_constraints()
+  {
+    const auto &mesh = geometry.mesh;
+    const auto &ids  = prm.boundary;
+    const auto  is_dirichlet = [&ids](const types::boundary_id id) {
+      const auto listed = [id](const std::vector<unsigned> &list) {
+        return std::find(list.begin(), list.end(), id) != list.end();
+      };
+      return ids.dirichlet_ids.empty() ? !listed(ids.neumann_ids) :
+                                         listed(ids.dirichlet_ids);
+    };
+
+    constraints.clear();
+    bool has_dirichlet_face = false;
+    for (const auto &face : mesh.faces)
+      if (face.at_boundary() && is_dirichlet(face.boundary_id))
+        {
+          has_dirichlet_face = true;
+          const unsigned int c = face.cells[0];
+          for (const unsigned int v : face.vertices)
+            {
+              const unsigned int side =
+                dofs.node_side(c, geometry.local_vertex(c, v));
+              if (constraints.is_constrained(dofs.node_side_dof(side, 0)))
+                continue;
+              const Vector<double> value =
+                side_limit(*dirichlet,
+                           mesh.vertices[v],
+                           geometry.cells[c].centroid);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  constraints.add_line(dofs.node_side_dof(side, d));
+                  constraints.set_inhomogeneity(dofs.node_side_dof(side, d),
+                                                value[d]);
+                }
+            }
+        }
+    AssertThrow(has_dirichlet_face,
+                ExcMessage("In <" + prm.file_name +
+                           ">: no boundary face is Dirichlet, so rigid motions "
+                           "are free. Set Boundary conditions/Dirichlet "
+                           "boundary ids (or leave it empty and list fewer "
+                           "Neumann ids)."));
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  FullMatrix<double>
+  Elasticity<dim>::local_stiffness(const LocalReconstruction<dim> &local) const
+  {
+    const double       mu = prm.lame_mu, lambda = prm.lame_lambda;
+    const unsigned int n = local.n_local();
+    const auto        &G = local.gradient_coefficients;
+    const FullMatrix<double> S = local.stabilisation();
+    FullMatrix<double>       A(dim * n, dim * n);
+    // For u = e_i G_t-shaped and v = e_j G_r-shaped:
+    // σ(u):ε(v) = μ (δ_ij G_t·G_r + G_t,j G_r,i) + λ G_t,i G_r,j.
+    for (unsigned int t = 0; t < n; ++t)
+      for (unsigned int r = 0; r < n; ++r)
+        {
+          const double dot = G[t] * G[r];
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              A(dim * t + i, dim * r + j) =
+                local.measure * (mu * ((i == j ? dot : 0.) + G[t][j] * G[r][i]) +
+                                 lambda * G[t][i] * G[r][j]) +
+                (i == j ? (2 * mu + lambda) * S(t, r) : 0.);
+        }
+    return A;
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::assemble()
+  {
+    make_constraints();
+    const auto &mesh = geometry.mesh;
+    const types::global_dof_index n_dofs = dofs.n_displacement_dofs();
+
+    DynamicSparsityPattern dsp(n_dofs);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      constraints.add_entries_local_to_global(dofs.cell_dofs(c), dsp, false);
+    sparsity.copy_from(dsp);
+    matrix.reinit(sparsity);
+    rhs.reinit(n_dofs);
+    solution.reinit(n_dofs);
+
+    Vector<double> f(dim);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const LocalReconstruction<dim> local(geometry, dofs, network, c);
+        const FullMatrix<double>       A = local_stiffness(local);
+        Vector<double>                 b(A.m());
+        for (const auto &q : geometry.quadrature(c))
+          {
+            body_force->vector_value(q.point, f);
+            for (unsigned int t = 0; t < local.n_local(); ++t)
+              {
+                const double phi = q.weight * local.potential_coefficient(t, q.point);
+                for (unsigned int d = 0; d < dim; ++d)
+                  b(dim * t + d) += f(d) * phi;
+              }
+          }
+        constraints.distribute_local_to_global(A, b, dofs.cell_dofs(c), matrix, rhs);
+      }
+
+    // Face loads: Neumann traction on the boundary, prescribed pressure and
+    // multiplier on the fractures. Both are Σ |σ| load · (coefficients).
+    const auto add_face_load = [&](const BlockCoefficients &coefficients,
+                                   const Tensor<1, dim>     &load) {
+      std::vector<types::global_dof_index> face_dofs;
+      Vector<double>                       b(dim * coefficients.size());
+      for (unsigned int k = 0; k < coefficients.size(); ++k)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            face_dofs.push_back(dim * coefficients[k].first + d);
+            b(dim * k + d) = coefficients[k].second * load[d];
+          }
+      constraints.distribute_local_to_global(b, face_dofs, rhs);
+    };
+
+    const auto &neumann_ids = prm.boundary.neumann_ids;
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.faces[f].at_boundary() &&
+          std::find(neumann_ids.begin(), neumann_ids.end(), mesh.faces[f].boundary_id) !=
+            neumann_ids.end())
+        {
+          Vector<double> g(dim);
+          neumann->vector_value(geometry.faces[f].centroid, g);
+          Tensor<1, dim> load;
+          for (unsigned int d = 0; d < dim; ++d)
+            load[d] = geometry.faces[f].measure * g(d);
+          add_face_load(face_mean(geometry, dofs, mesh.faces[f].cells[0], f), load);
+        }
+
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const unsigned int f = network.fracture_faces[i].face;
+        const Tensor<1, dim> load =
+          -geometry.faces[f].measure *
+          (fracture_traction(i) +
+           fracture_pressure->value(geometry.faces[f].centroid) * network.normal(i));
+        add_face_load(jump(geometry, dofs, network, i), load);
+      }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Elasticity<dim>::fracture_traction(const unsigned int i) const
+  {
+    Vector<double> value(dim);
+    traction->vector_value(geometry.faces[network.fracture_faces[i].face].centroid,
+                           value);
+    Tensor<1, dim> result;
+    for (unsigned int d = 0; d < dim; ++d)
+      result[d] = value(d);
+    return result;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Elasticity<dim>::solve()
+  {
+    unsigned int iterations = 0;
+    if (prm.solver.method == "direct")
+      {
+        SparseDirectUMFPACK direct;
+        direct.initialize(matrix);
+        direct.vmult(solution, rhs);
+      }
+    else
+      {
+        TrilinosWrappers::SparseMatrix trilinos_matrix;
+        trilinos_matrix.reinit(matrix);
+        // Translations of the node-side unknowns (bubbles have none).
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        data.constant_modes.assign(dim, std::vector<bool>(matrix.m(), false));
+        for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
+          for (unsigned int d = 0; d < dim; ++d)
+            data.constant_modes[d][dofs.node_side_dof(n, d)] = true;
+        TrilinosWrappers::PreconditionAMG amg;
+        amg.initialize(trilinos_matrix, data);
+        SolverControl control(prm.solver.max_iterations,
+                              prm.solver.tolerance * rhs.l2_norm());
+        SolverCG<Vector<double>> cg(control);
+        try
+          {
+            cg.solve(matrix, solution, rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("The AMG-preconditioned CG solver did not "
+                                   "converge in " +
+                                   std::to_string(e.last_step) +
+                                   " iterations (residual " +
+                                   std::to_string(e.last_residual) +
+                                   "). Raise Linear solver/Maximum iterations "
+                                   "or use Method = direct."));
+          }
+        iterations = control.last_step();
+      }
+    constraints.distribute(solution);
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  Elasticity<dim>::local_values(const unsigned int c) const
+  {
+    const std::vector<types::global_dof_index> local = dofs.cell_dofs(c);
+    std::vector<Tensor<1, dim>>                values(local.size() / dim);
+    for (unsigned int t = 0; t < values.size(); ++t)
+      for (unsigned int d = 0; d < dim; ++d)
+        values[t][d] = solution(local[dim * t + d]);
+    return values;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Elasticity<dim>::jump_value(const unsigned int i) const
+  {
+    Tensor<1, dim> result;
+    for (const auto &[block, w] : jump(geometry, dofs, network, i))
+      for (unsigned int d = 0; d < dim; ++d)
+        result[d] += w * solution(dim * block + d);
+    return result;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  Elasticity<dim>::stress(const unsigned int c) const
+  {
+    const LocalReconstruction<dim> local(geometry, dofs, network, c);
+    const Tensor<2, dim> grad = local.gradient(local_values(c));
+    const Tensor<2, dim> strain = 0.5 * (grad + transpose(grad));
+    return 2 * prm.lame_mu * strain +
+           prm.lame_lambda * trace(grad) * unit_symmetric_tensor<dim>();
+  }
+
+
+
+  template class Elasticity<2>;
+  template class Elasticity<3>;
+} // namespace PolyFrac
