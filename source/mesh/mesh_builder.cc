@@ -33,8 +33,19 @@ namespace PolyFrac
           // hypercube parent: subdivide instead.
           for (unsigned int &s : subdivisions)
             s <<= n_refinements;
+          // deal.II 9.4 cannot colorize simplex boxes: set the ids here.
           GridGenerator::subdivided_hyper_rectangle_with_simplices(
-            tria, subdivisions, lower, upper, true);
+            tria, subdivisions, lower, upper, false);
+          for (const auto &face : tria.active_face_iterators())
+            if (face->at_boundary())
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const double tol = 1e-10 * (upper[d] - lower[d]);
+                  if (std::abs(face->center()[d] - lower[d]) < tol)
+                    face->set_boundary_id(2 * d);
+                  else if (std::abs(face->center()[d] - upper[d]) < tol)
+                    face->set_boundary_id(2 * d + 1);
+                }
         }
       else
         {
