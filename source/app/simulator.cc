@@ -128,14 +128,18 @@ namespace PolyFrac
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
 
+    const double setup_time = timer.wall_time();
     Elasticity<dim> elasticity(prm, geometry, network, dofs);
     elasticity.assemble();
-    const unsigned int iterations = elasticity.solve();
+    const double       assembly_time = timer.wall_time() - setup_time;
+    const unsigned int iterations    = elasticity.solve();
+    const double       wall          = timer.wall_time();
     if (prm.solver.method == "AMG")
       out << "CG iterations: " << iterations << std::endl;
-    const double wall = timer.wall_time();
     if (prm.output.print_timings)
-      out << "Setup and solve: " << wall << " s" << std::endl;
+      out << "Wall time: mesh " << setup_time << " s, assembly "
+          << assembly_time << " s, solve "
+          << wall - setup_time - assembly_time << " s" << std::endl;
 
     ConvergenceRow row{level,
                        geometry.max_diameter(),

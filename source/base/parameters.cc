@@ -107,8 +107,9 @@ namespace PolyFrac
 
   Parameters::Parameters(const unsigned int dim)
     : dim(dim)
+    , prm(std::make_shared<ParameterHandler>())
   {
-    declare(prm, dim);
+    declare(*prm, dim);
     read_values();
   }
 
@@ -347,7 +348,7 @@ namespace PolyFrac
                            ">: check the path."));
     try
       {
-        prm.parse_input(in, file_name);
+        prm->parse_input(in, file_name);
       }
     catch (const ExceptionBase &e)
       {
@@ -383,31 +384,31 @@ namespace PolyFrac
   void
   Parameters::read_values()
   {
-    dim = prm.get_integer("Dimension");
+    dim = prm->get_integer("Dimension");
 
-    prm.enter_subsection("Expressions");
+    prm->enter_subsection("Expressions");
     constants.clear();
     for (const std::string &pair :
-         Utilities::split_string_list(prm.get("Function constants"), ','))
+         Utilities::split_string_list(prm->get("Function constants"), ','))
       {
         const std::vector<std::string> key_value =
           Utilities::split_string_list(pair, '=');
         constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
       }
-    prm.leave_subsection();
+    prm->leave_subsection();
 
-    prm.enter_subsection("Model");
-    model = prm.get("Model");
-    prm.leave_subsection();
+    prm->enter_subsection("Model");
+    model = prm->get("Model");
+    prm->leave_subsection();
 
     const std::string where = "In <" + file_name + ">, subsection <Mesh>";
-    prm.enter_subsection("Mesh");
-    mesh.source    = prm.get("Source");
-    mesh.cell_type = prm.get("Cell type");
+    prm->enter_subsection("Mesh");
+    mesh.source    = prm->get("Source");
+    mesh.cell_type = prm->get("Cell type");
     mesh.lower_left =
-      parse_point(prm.get("Lower left corner"), dim, where + " <Lower left>");
+      parse_point(prm->get("Lower left corner"), dim, where + " <Lower left>");
     mesh.upper_right =
-      parse_point(prm.get("Upper right corner"), dim, where + " <Upper right>");
+      parse_point(prm->get("Upper right corner"), dim, where + " <Upper right>");
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(mesh.lower_left[d] < mesh.upper_right[d],
                   ExcMessage(where + ": <Lower left corner> must be below "
@@ -415,12 +416,12 @@ namespace PolyFrac
                                      "coordinate."));
     mesh.subdivisions.clear();
     for (const std::string &s :
-         Utilities::split_string_list(prm.get("Subdivisions")))
+         Utilities::split_string_list(prm->get("Subdivisions")))
       mesh.subdivisions.push_back(Utilities::string_to_int(s));
-    mesh.global_refinements = prm.get_integer("Global refinements");
+    mesh.global_refinements = prm->get_integer("Global refinements");
     {
       const std::vector<std::vector<Point<3>>> box =
-        parse_point_lists(prm.get("Local refinement box"),
+        parse_point_lists(prm->get("Local refinement box"),
                           dim,
                           where + " <Local refinement box>");
       AssertThrow(box.size() == 1 && box[0].size() == 2,
@@ -430,13 +431,13 @@ namespace PolyFrac
       mesh.box_lower = box[0][0];
       mesh.box_upper = box[0][1];
     }
-    mesh.local_refinements  = prm.get_integer("Local refinements");
-    mesh.distortion         = prm.get_double("Distortion");
-    mesh.distortion_type    = prm.get("Distortion type");
-    mesh.random_seed        = prm.get_integer("Random seed");
-    mesh.cells_per_polytope = prm.get_integer("Cells per polytope");
-    mesh.file_name          = prm.get("File name");
-    prm.leave_subsection();
+    mesh.local_refinements  = prm->get_integer("Local refinements");
+    mesh.distortion         = prm->get_double("Distortion");
+    mesh.distortion_type    = prm->get("Distortion type");
+    mesh.random_seed        = prm->get_integer("Random seed");
+    mesh.cells_per_polytope = prm->get_integer("Cells per polytope");
+    mesh.file_name          = prm->get("File name");
+    prm->leave_subsection();
     if (mesh.source == "gmsh")
       {
         AssertThrow(!mesh.file_name.empty(),
@@ -449,10 +450,10 @@ namespace PolyFrac
                                "> cannot be opened."));
       }
 
-    prm.enter_subsection("Fractures");
+    prm->enter_subsection("Fractures");
     const std::string fwhere = "In <" + file_name + ">, subsection <Fractures>";
     fractures.geometries =
-      parse_point_lists(prm.get(dim == 2 ? "Segments" : "Polygons"),
+      parse_point_lists(prm->get(dim == 2 ? "Segments" : "Polygons"),
                         dim,
                         fwhere);
     for (unsigned int i = 0; i < fractures.geometries.size(); ++i)
@@ -462,78 +463,78 @@ namespace PolyFrac
                              (dim == 2 ? " must be a segment <A : B>." :
                                          " must be a polygon of at least 3 "
                                          "points.")));
-    if (!prm.get(dim == 2 ? "Polygons" : "Segments").empty())
+    if (!prm->get(dim == 2 ? "Polygons" : "Segments").empty())
       warnings.push_back(std::string(dim == 2 ? "Polygons" : "Segments") +
                          " is ignored in dimension " + std::to_string(dim));
     fractures.gmsh_physical_tags.clear();
     for (const std::string &s :
-         Utilities::split_string_list(prm.get("Gmsh physical tags")))
+         Utilities::split_string_list(prm->get("Gmsh physical tags")))
       fractures.gmsh_physical_tags.push_back(Utilities::string_to_int(s));
-    fractures.pressure = prm.get("Pressure");
+    fractures.pressure = prm->get("Pressure");
     fractures.traction =
-      checked_vector_expression("Fractures/Traction", prm.get("Traction"));
-    prm.leave_subsection();
+      checked_vector_expression("Fractures/Traction", prm->get("Traction"));
+    prm->leave_subsection();
 
-    prm.enter_subsection("Material");
-    lame_lambda = prm.get_double("Lame lambda");
-    lame_mu     = prm.get_double("Lame mu");
-    prm.leave_subsection();
+    prm->enter_subsection("Material");
+    lame_lambda = prm->get_double("Lame lambda");
+    lame_mu     = prm->get_double("Lame mu");
+    prm->leave_subsection();
 
-    prm.enter_subsection("Body force");
+    prm->enter_subsection("Body force");
     body_force = checked_vector_expression("Body force/Function expression",
-                                           prm.get("Function expression"));
-    prm.leave_subsection();
+                                           prm->get("Function expression"));
+    prm->leave_subsection();
 
-    prm.enter_subsection("Boundary conditions");
+    prm->enter_subsection("Boundary conditions");
     boundary.dirichlet_expression =
       checked_vector_expression("Boundary conditions/Dirichlet expression",
-                                prm.get("Dirichlet expression"));
+                                prm->get("Dirichlet expression"));
     boundary.dirichlet_ids.clear();
     boundary.neumann_ids.clear();
     for (const std::string &s :
-         Utilities::split_string_list(prm.get("Dirichlet boundary ids")))
+         Utilities::split_string_list(prm->get("Dirichlet boundary ids")))
       boundary.dirichlet_ids.push_back(Utilities::string_to_int(s));
     for (const std::string &s :
-         Utilities::split_string_list(prm.get("Neumann boundary ids")))
+         Utilities::split_string_list(prm->get("Neumann boundary ids")))
       boundary.neumann_ids.push_back(Utilities::string_to_int(s));
     boundary.neumann_traction =
       checked_vector_expression("Boundary conditions/Neumann traction",
-                                prm.get("Neumann traction"));
-    prm.leave_subsection();
+                                prm->get("Neumann traction"));
+    prm->leave_subsection();
 
-    prm.enter_subsection("Exact solution");
-    exact.displacement = prm.get("Displacement");
+    prm->enter_subsection("Exact solution");
+    exact.displacement = prm->get("Displacement");
     if (!exact.displacement.empty())
       exact.displacement =
         checked_vector_expression("Exact solution/Displacement",
                                   exact.displacement);
-    exact.displacement_jump = prm.get("Displacement jump");
+    exact.displacement_jump = prm->get("Displacement jump");
     if (!exact.displacement_jump.empty())
       exact.displacement_jump =
         checked_vector_expression("Exact solution/Displacement jump",
                                   exact.displacement_jump);
-    exact.contact_traction = prm.get("Contact traction");
+    exact.contact_traction = prm->get("Contact traction");
     if (!exact.contact_traction.empty())
       exact.contact_traction =
         checked_vector_expression("Exact solution/Contact traction",
                                   exact.contact_traction);
-    prm.leave_subsection();
+    prm->leave_subsection();
 
-    prm.enter_subsection("Convergence study");
-    n_refinement_levels = prm.get_integer("Number of refinement levels");
-    prm.leave_subsection();
+    prm->enter_subsection("Convergence study");
+    n_refinement_levels = prm->get_integer("Number of refinement levels");
+    prm->leave_subsection();
 
-    prm.enter_subsection("Linear solver");
-    solver.method         = prm.get("Method");
-    solver.tolerance      = prm.get_double("Tolerance");
-    solver.max_iterations = prm.get_integer("Maximum iterations");
-    prm.leave_subsection();
+    prm->enter_subsection("Linear solver");
+    solver.method         = prm->get("Method");
+    solver.tolerance      = prm->get_double("Tolerance");
+    solver.max_iterations = prm->get_integer("Maximum iterations");
+    prm->leave_subsection();
 
-    prm.enter_subsection("Output");
-    output.directory     = prm.get("Output directory");
-    output.write_vtu     = prm.get_bool("Write VTU");
-    output.print_timings = prm.get_bool("Print timings");
-    prm.leave_subsection();
+    prm->enter_subsection("Output");
+    output.directory     = prm->get("Output directory");
+    output.write_vtu     = prm->get_bool("Write VTU");
+    output.print_timings = prm->get_bool("Print timings");
+    prm->leave_subsection();
 
     if (model == "elasticity" && !exact.contact_traction.empty())
       warnings.push_back("Exact solution/Contact traction is not used by "
@@ -550,7 +551,7 @@ namespace PolyFrac
   Parameters::write_used_parameters(const std::string &name) const
   {
     std::ofstream out(name);
-    prm.print_parameters(out, ParameterHandler::PRM);
+    prm->print_parameters(out, ParameterHandler::PRM);
   }
 
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -145,7 +146,8 @@ namespace PolyFrac
     checked_vector_expression(const std::string &entry,
                               const std::string &expression) const;
 
-    ParameterHandler prm;
+    /** Shared, so that a Parameters object can be copied and modified. */
+    std::shared_ptr<ParameterHandler> prm;
   };
 } // namespace PolyFrac
 

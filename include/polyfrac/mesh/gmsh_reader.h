@@ -1,0 +1,98 @@
+#ifndef polyfrac_mesh_gmsh_reader_h
+#define polyfrac_mesh_gmsh_reader_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+
+#include <polyfrac/base/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * What read_gmsh() returns besides the triangulation: the fracture
+   * elements of a gmsh mesh, i.e. the (dim-1)-dimensional elements of the
+   * physical groups listed in `Fractures/Gmsh physical tags`.
+   *
+   * Each fracture element keeps the node order of gmsh, which fixes its n^+
+   * (the same convention as a planar Fracture, scheme.md §3):
+   * - 2D, line n0 -> n1: n^+ = (-(n1-n0)_y, (n1-n0)_x)/|n1-n0|, the left
+   *   normal, so the + side lies to the right of n0 -> n1;
+   * - 3D, triangle n0, n1, n2 (or quadrangle): the right-hand-rule normal
+   *   (n1-n0) x (n2-n0) normalised (the Newell normal of the loop).
+   *
+   * n^+ never comes from deal.II's face orientation, which is a property of
+   * the mesh numbering and not of the fracture.
+   *
+   * Invariant: `vertices` are vertex indices of the triangulation filled by
+   * read_gmsh(), so a fracture element is matched to a mesh face by its
+   * sorted vertex set.
+   */
+  template <int dim>
+  struct GmshMesh
+  {
+    /** A (dim-1)-dimensional element of a fracture. */
+    struct FractureElement
+    {
+      /** Triangulation vertex indices, in gmsh's node order. */
+      std::vector<unsigned int> vertices;
+      /** Index into fracture_names. */
+      unsigned int fracture;
+      /** Unit normal n^+ from the node order. */
+      Tensor<1, dim> normal;
+    };
+
+    /** "gmsh physical tag T", one per entry of Gmsh physical tags. */
+    std::vector<std::string> fracture_names;
+
+    /** All fracture elements (after the gmsh refinements). */
+    std::vector<FractureElement> fracture_elements;
+  };
+
+  /**
+   * Reads (or, for a `.geo`, meshes) `Mesh/File name` with the gmsh C++ API
+   * into @p tria and returns its fracture elements.
+   *
+   * Steps: `gmsh::open`; `generate(dim)` if the file is a `.geo`;
+   * @p n_refinements uniform gmsh refinements (`refine()`, which splits the
+   * fracture elements together with the cells, so they stay conforming);
+   * extraction:
+   * - the dim-dimensional elements (triangles/quadrangles in 2D,
+   *   tetrahedra/hexahedra in 3D, first order) become the cells of
+   *   @p tria; only the nodes they use become vertices (numbered by
+   *   increasing gmsh node tag); cells are oriented to positive measure;
+   * - the boundary faces of @p tria covered by a (dim-1)-dimensional
+   *   element of a physical group that is not a fracture get that group's
+   *   tag as boundary id; the other boundary faces get 0;
+   * - the (dim-1)-dimensional elements of the fracture tags become
+   *   GmshMesh::fracture_elements, one fracture per listed tag.
+   *
+   * Errors (ExcMessage naming the file): the file cannot be opened or
+   * meshed; its mesh has no dim-dimensional elements or is of another
+   * dimension; a listed fracture tag has no (dim-1)-dimensional elements;
+   * a fracture element is not made of cell vertices (fracture not
+   * embedded in the mesh: `Curve{..} In Surface{..}` /
+   * `Surface{..} In Volume{..}`); a non-fracture (dim-1) physical group
+   * has an element inside the domain; `Local refinements` > 0 (refine in
+   * the `.geo` instead); PolyFrac built without the gmsh API.
+   *
+   * @code
+   *   Triangulation<2>     tria;
+   *   const GmshMesh<2>    gmsh_mesh =
+   *     read_gmsh<2>(prm, prm.mesh.global_refinements + level, tria);
+   *   for (const auto &element : gmsh_mesh.fracture_elements)
+   *     ... element.vertices, element.normal ...
+   * @endcode
+   */
+  template <int dim>
+  GmshMesh<dim>
+  read_gmsh(const Parameters  &prm,
+            const unsigned int n_refinements,
+            Triangulation<dim> &tria);
+} // namespace PolyFrac
+
+#endif

@@ -1,0 +1,412 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_description.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <polyfrac/mesh/gmsh_reader.h>
+
+#ifdef POLYFRAC_WITH_GMSH_API
+#  include <gmsh.h>
+#endif
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+namespace PolyFrac
+{
+#ifdef POLYFRAC_WITH_GMSH_API
+  namespace
+  {
+    /**
+     * gmsh is a global state: initialised here (quietly, one thread, no
+     * user configuration files, so the mesh does not depend on the
+     * machine) and finalised when the object goes out of scope, also when
+     * an exception leaves read_gmsh().
+     */
+    class GmshSession
+    {
+    public:
+      /** Initialises gmsh and silences its terminal output. */
+      GmshSession()
+      {
+        gmsh::initialize(0, nullptr, false);
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.NumThreads", 1);
+      }
+
+      /** Finalises gmsh. */
+      ~GmshSession()
+      {
+        gmsh::finalize();
+      }
+
+      GmshSession(const GmshSession &) = delete;
+      GmshSession &
+      operator=(const GmshSession &) = delete;
+    };
+
+    /**
+     * A first-order gmsh element type PolyFrac reads, with the map from
+     * deal.II's vertex numbering to gmsh's node numbering
+     * (`deal_ii_to_gmsh[i]` is the gmsh node of deal.II vertex i).
+     */
+    struct ElementType
+    {
+      unsigned int              dim;
+      std::vector<unsigned int> deal_ii_to_gmsh;
+    };
+
+    /**
+     * The supported linear gmsh element types (MSH numbering): 1 line,
+     * 2 triangle, 3 quadrangle, 4 tetrahedron, 5 hexahedron. gmsh numbers
+     * quadrangles and hexahedra cyclically, deal.II lexicographically.
+     */
+    const std::map<int, ElementType> &
+    supported_types()
+    {
+      static const std::map<int, ElementType> types = {
+        {1, {1, {0, 1}}},
+        {2, {2, {0, 1, 2}}},
+        {3, {2, {0, 1, 3, 2}}},
+        {4, {3, {0, 1, 2, 3}}},
+        {5, {3, {0, 1, 3, 2, 4, 5, 7, 6}}}};
+      return types;
+    }
+
+    /** The name gmsh gives to element type @p type (for messages). */
+    std::string
+    element_name(const int type)
+    {
+      std::string         name;
+      int                 element_dim, order, n_nodes, n_primary_nodes;
+      std::vector<double> local_coordinates;
+      gmsh::model::mesh::getElementProperties(type,
+                                              name,
+                                              element_dim,
+                                              order,
+                                              n_nodes,
+                                              local_coordinates,
+                                              n_primary_nodes);
+      return name;
+    }
+
+    /** A gmsh element: its type and its node tags in gmsh's order. */
+    struct Element
+    {
+      int                      type;
+      std::vector<std::size_t> nodes;
+    };
+
+    /**
+     * The elements of dimension @p element_dim on the entity @p entity (all
+     * entities of that dimension if negative). Throws naming @p file_name
+     * for element types PolyFrac does not read (second order, prisms,
+     * pyramids, ...).
+     */
+    std::vector<Element>
+    elements_of(const int          element_dim,
+                const int          entity,
+                const std::string &file_name)
+    {
+      std::vector<int>                      types;
+      std::vector<std::vector<std::size_t>> element_tags, node_tags;
+      gmsh::model::mesh::getElements(
+        types, element_tags, node_tags, element_dim, entity);
+
+      std::vector<Element> elements;
+      for (unsigned int t = 0; t < types.size(); ++t)
+        {
+          const auto type = supported_types().find(types[t]);
+          AssertThrow(type != supported_types().end() &&
+                        static_cast<int>(type->second.dim) == element_dim,
+                      ExcMessage(
+                        "The gmsh mesh <" + file_name +
+                        "> has elements of type <" + element_name(types[t]) +
+                        ">: PolyFrac reads first-order lines, triangles, "
+                        "quadrangles, tetrahedra and hexahedra only."));
+          const unsigned int n_nodes = type->second.deal_ii_to_gmsh.size();
+          for (unsigned int e = 0; e < element_tags[t].size(); ++e)
+            elements.push_back(
+              {types[t],
+               std::vector<std::size_t>(node_tags[t].begin() + e * n_nodes,
+                                        node_tags[t].begin() +
+                                          (e + 1) * n_nodes)});
+        }
+      return elements;
+    }
+
+    /** The (dim-1)-dimensional elements of physical group @p tag. */
+    std::vector<Element>
+    elements_of_physical_group(const int          element_dim,
+                               const int          tag,
+                               const std::string &file_name)
+    {
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(element_dim, tag, entities);
+      std::vector<Element> elements;
+      for (const int entity : entities)
+        {
+          const auto on_entity = elements_of(element_dim, entity, file_name);
+          elements.insert(elements.end(), on_entity.begin(), on_entity.end());
+        }
+      return elements;
+    }
+
+    /**
+     * n^+ of a fracture element from its node order (see GmshMesh): the
+     * left normal of n0 -> n1 in 2D, the Newell normal of the node loop in
+     * 3D (for a triangle, (n1-n0) x (n2-n0) normalised).
+     */
+    template <int dim>
+    Tensor<1, dim>
+    element_normal(const std::vector<Point<dim>>   &vertices,
+                   const std::vector<unsigned int> &loop)
+    {
+      Tensor<1, dim> normal;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, 2> tangent = vertices[loop[1]] - vertices[loop[0]];
+          normal[0]                  = -tangent[1];
+          normal[1]                  = tangent[0];
+        }
+      else
+        for (unsigned int i = 1; i + 1 < loop.size(); ++i)
+          normal += cross_product_3d(vertices[loop[i]] - vertices[loop[0]],
+                                     vertices[loop[i + 1]] - vertices[loop[0]]);
+      AssertThrow(normal.norm() > 0,
+                  ExcMessage("A gmsh fracture element is degenerate (zero "
+                             "length or area)."));
+      return normal / normal.norm();
+    }
+  } // namespace
+#endif
+
+
+
+  template <int dim>
+  GmshMesh<dim>
+  read_gmsh(const Parameters  &prm,
+            const unsigned int n_refinements,
+            Triangulation<dim> &tria)
+  {
+    const std::string &file_name = prm.mesh.file_name;
+    AssertThrow(prm.mesh.local_refinements == 0,
+                ExcMessage("Mesh/Local refinements > 0 is not supported with "
+                           "Mesh/Source = gmsh (the gmsh mesh <" +
+                           file_name +
+                           ">): refine it in the .geo file (mesh size "
+                           "fields) and set Local refinements = 0."));
+    AssertThrow(std::ifstream(file_name).good(),
+                ExcMessage("The gmsh mesh <" + file_name +
+                           "> cannot be opened: check Mesh/File name."));
+#ifndef POLYFRAC_WITH_GMSH_API
+    (void)n_refinements;
+    (void)tria;
+    AssertThrow(false,
+                ExcMessage("Cannot read the gmsh mesh <" + file_name +
+                           ">: PolyFrac was built without the gmsh C++ API "
+                           "(install libgmsh-dev and deal.II with gmsh, then "
+                           "reconfigure)."));
+    return {};
+#else
+    const std::string in_file = "The gmsh mesh <" + file_name + ">";
+    GmshMesh<dim>     result;
+    GmshSession       session;
+    try
+      {
+        gmsh::open(file_name);
+        const bool is_geo = file_name.size() >= 4 &&
+                            file_name.compare(file_name.size() - 4, 4, ".geo") == 0;
+        if (is_geo)
+          gmsh::model::mesh::generate(dim);
+        for (unsigned int r = 0; r < n_refinements; ++r)
+          gmsh::model::mesh::refine();
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(in_file + " cannot be read or meshed by gmsh: " +
+                               e.what()));
+      }
+    catch (...)
+      {
+        AssertThrow(false,
+                    ExcMessage(in_file + " cannot be read or meshed by gmsh."));
+      }
+    AssertThrow(gmsh::model::getDimension() == dim,
+                ExcMessage(in_file + " is " +
+                           std::to_string(gmsh::model::getDimension()) +
+                           "-dimensional, but Dimension = " +
+                           std::to_string(dim) + "."));
+
+    // Cells: the dim-dimensional elements, on their own vertices (numbered
+    // by increasing node tag, so the numbering depends on the mesh only).
+    const std::vector<Element> volume_elements =
+      elements_of(dim, -1, file_name);
+    AssertThrow(!volume_elements.empty(),
+                ExcMessage(in_file + " has no elements of dimension " +
+                           std::to_string(dim) + "."));
+    std::map<std::size_t, unsigned int> vertex_of_node;
+    for (const Element &element : volume_elements)
+      for (const std::size_t node : element.nodes)
+        vertex_of_node.emplace(node, 0);
+    {
+      unsigned int v = 0;
+      for (auto &[node, vertex] : vertex_of_node)
+        vertex = v++;
+    }
+    const auto vertex_index = [&](const std::size_t node) {
+      const auto it = vertex_of_node.find(node);
+      return it == vertex_of_node.end() ? numbers::invalid_unsigned_int :
+                                          it->second;
+    };
+
+    std::vector<Point<dim>> vertices(vertex_of_node.size());
+    {
+      std::vector<std::size_t> node_tags;
+      std::vector<double>      coordinates, parametric_coordinates;
+      gmsh::model::mesh::getNodes(
+        node_tags, coordinates, parametric_coordinates, -1, -1, false, false);
+      double extent = 0, largest_z = 0;
+      for (unsigned int i = 0; i < node_tags.size(); ++i)
+        {
+          const unsigned int v = vertex_index(node_tags[i]);
+          if (v == numbers::invalid_unsigned_int)
+            continue;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              vertices[v][d] = coordinates[3 * i + d];
+              extent = std::max(extent, std::abs(coordinates[3 * i + d]));
+            }
+          largest_z = std::max(largest_z, std::abs(coordinates[3 * i + 2]));
+        }
+      AssertThrow(dim == 3 || largest_z <= 1e-12 * extent,
+                  ExcMessage(in_file +
+                             " is two-dimensional but does not lie in the "
+                             "plane z = 0."));
+    }
+
+    std::vector<CellData<dim>> cells;
+    cells.reserve(volume_elements.size());
+    bool all_hypercubes = true;
+    for (const Element &element : volume_elements)
+      {
+        const std::vector<unsigned int> &deal_ii_to_gmsh =
+          supported_types().at(element.type).deal_ii_to_gmsh;
+        CellData<dim> cell(element.nodes.size());
+        for (unsigned int i = 0; i < element.nodes.size(); ++i)
+          cell.vertices[i] = vertex_index(element.nodes[deal_ii_to_gmsh[i]]);
+        all_hypercubes = all_hypercubes && element.nodes.size() ==
+                                             GeometryInfo<dim>::vertices_per_cell;
+        cells.push_back(cell);
+      }
+    // gmsh orients each cell by its entity; deal.II wants positive measure.
+    GridTools::invert_cells_with_negative_measure(vertices, cells);
+    if (all_hypercubes)
+      GridTools::consistently_order_cells(cells);
+    tria.clear();
+    tria.create_triangulation(vertices, cells, SubCellData());
+
+    // Boundary ids: the tag of the first non-fracture physical group of
+    // dimension dim-1 that covers the face, 0 otherwise.
+    const std::vector<int> &fracture_tags = prm.fractures.gmsh_physical_tags;
+    gmsh::vectorpair        groups;
+    gmsh::model::getPhysicalGroups(groups, dim - 1);
+    std::map<std::vector<unsigned int>, types::boundary_id> boundary_id_of;
+    for (const auto &[group_dim, tag] : groups)
+      {
+        if (std::find(fracture_tags.begin(), fracture_tags.end(), tag) !=
+            fracture_tags.end())
+          continue;
+        for (const Element &element :
+             elements_of_physical_group(group_dim, tag, file_name))
+          {
+            std::vector<unsigned int> key;
+            for (const std::size_t node : element.nodes)
+              key.push_back(vertex_index(node));
+            std::sort(key.begin(), key.end());
+            AssertThrow(key.back() != numbers::invalid_unsigned_int,
+                        ExcMessage(in_file + ": an element of physical group " +
+                                   std::to_string(tag) +
+                                   " is not a face of the mesh."));
+            boundary_id_of.emplace(key, tag);
+          }
+      }
+    std::set<std::vector<unsigned int>> used_keys;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            std::vector<unsigned int> key;
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              key.push_back(cell->face(f)->vertex_index(v));
+            std::sort(key.begin(), key.end());
+            const auto it = boundary_id_of.find(key);
+            cell->face(f)->set_boundary_id(it == boundary_id_of.end() ? 0 :
+                                                                        it->second);
+            if (it != boundary_id_of.end())
+              used_keys.insert(key);
+          }
+    for (const auto &[key, tag] : boundary_id_of)
+      AssertThrow(used_keys.count(key) == 1,
+                  ExcMessage(in_file + ": physical group " +
+                             std::to_string(tag) + " of dimension " +
+                             std::to_string(dim - 1) +
+                             " has elements inside the domain. If it is a "
+                             "fracture, list it in Fractures/Gmsh physical "
+                             "tags."));
+
+    // Fractures: one per listed tag, n^+ from each element's node order.
+    for (unsigned int i = 0; i < fracture_tags.size(); ++i)
+      {
+        const int  tag       = fracture_tags[i];
+        const bool is_group  = std::find(groups.begin(),
+                                        groups.end(),
+                                        std::make_pair(dim - 1, tag)) !=
+                              groups.end();
+        const auto elements  = is_group ?
+                                 elements_of_physical_group(dim - 1, tag, file_name) :
+                                 std::vector<Element>();
+        AssertThrow(!elements.empty(),
+                    ExcMessage(in_file + " has no element of dimension " +
+                               std::to_string(dim - 1) +
+                               " in physical group " + std::to_string(tag) +
+                               ", listed in Fractures/Gmsh physical tags."));
+        result.fracture_names.push_back("gmsh physical tag " +
+                                        std::to_string(tag));
+        for (const Element &element : elements)
+          {
+            typename GmshMesh<dim>::FractureElement fracture_element;
+            fracture_element.fracture = i;
+            for (const std::size_t node : element.nodes)
+              {
+                fracture_element.vertices.push_back(vertex_index(node));
+                AssertThrow(fracture_element.vertices.back() !=
+                              numbers::invalid_unsigned_int,
+                            ExcMessage(
+                              in_file + ": an element of fracture tag " +
+                              std::to_string(tag) +
+                              " is not made of cell vertices. Embed the "
+                              "fracture in the mesh (Curve{..} In "
+                              "Surface{..}; or Surface{..} In Volume{..};)."));
+              }
+            fracture_element.normal =
+              element_normal(vertices, fracture_element.vertices);
+            result.fracture_elements.push_back(fracture_element);
+          }
+      }
+    return result;
+#endif
+  }
+
+
+
+  template GmshMesh<2>
+  read_gmsh(const Parameters &, const unsigned int, Triangulation<2> &);
+  template GmshMesh<3>
+  read_gmsh(const Parameters &, const unsigned int, Triangulation<3> &);
+} // namespace PolyFrac

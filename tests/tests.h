@@ -1,0 +1,35 @@
+// Shared helpers of the PolyFrac unit tests.
+#ifndef polyfrac_tests_h
+#define polyfrac_tests_h
+
+#include <polyfrac/base/parameters.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace PolyFrac::Testing
+{
+  /** Default parameters of dimension @p dim on the box (-1, 1)^dim. */
+  inline Parameters
+  default_parameters(const unsigned int dim, const unsigned int subdivisions)
+  {
+    Parameters prm(dim);
+    prm.mesh.subdivisions.assign(dim, subdivisions);
+    return prm;
+  }
+
+  /** Prints @p value as "0" below @p tol (round-off), else 3 digits. */
+  inline std::string
+  round_off(const double value, const double tol = 1e-12)
+  {
+    if (std::abs(value) < tol)
+      return "0 (round-off)";
+    std::ostringstream out;
+    out << std::setprecision(3) << value;
+    return out.str();
+  }
+} // namespace PolyFrac::Testing
+
+#endif
