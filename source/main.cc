@@ -1,6 +1,7 @@
 /**
- * The PolyFrac program: `polyfrac [FILE.prm]` runs the scene of a parameter
- * file (default: prm/default.prm of the source tree);
+ * The PolyFrac program: `polyfrac [FILE.prm] [--set Subsection/Entry=value
+ * ...]` runs the scene of a parameter file (default: prm/default.prm of the
+ * source tree), with entries overridden from the command line;
  * `polyfrac --print-parameters 2|3` prints the documented default tree.
  */
 #include <deal.II/base/mpi.h>
@@ -23,11 +24,20 @@ main(int argc, char **argv)
                                      std::cout);
           return 0;
         }
+      const bool        has_file = argc > 1 && argument != "--set";
       const std::string file =
-        argc > 1 ? argument : std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm";
+        has_file ? argument : std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm";
+      std::vector<std::string> overrides;
+      for (int i = has_file ? 2 : 1; i < argc; ++i)
+        {
+          AssertThrow(std::string(argv[i]) == "--set" && i + 1 < argc,
+                      ExcMessage("Usage: polyfrac [FILE.prm] [--set "
+                                 "Subsection/Entry=value ...]"));
+          overrides.push_back(argv[++i]);
+        }
       const unsigned int dim = Parameters::read_dimension(file);
       Parameters         prm(dim);
-      prm.parse(file);
+      prm.parse(file, overrides);
       if (dim == 2)
         Simulator<2>(prm).run(std::cout);
       else

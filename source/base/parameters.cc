@@ -339,7 +339,8 @@ namespace PolyFrac
 
 
   void
-  Parameters::parse(const std::string &name)
+  Parameters::parse(const std::string              &name,
+                    const std::vector<std::string> &overrides)
   {
     file_name = name;
     std::ifstream in(file_name);
@@ -349,6 +350,22 @@ namespace PolyFrac
     try
       {
         prm->parse_input(in, file_name);
+        for (const std::string &entry : overrides)
+          {
+            const std::size_t equal = entry.find('=');
+            AssertThrow(equal != std::string::npos,
+                        ExcMessage("The override <" + entry +
+                                   "> must read <Subsection/Entry=value>."));
+            const std::vector<std::string> path =
+              Utilities::split_string_list(entry.substr(0, equal), '/');
+            std::string text;
+            for (unsigned int i = 0; i + 1 < path.size(); ++i)
+              text += "subsection " + path[i] + "\n";
+            text += "set " + path.back() + " = " + entry.substr(equal + 1) + "\n";
+            for (unsigned int i = 0; i + 1 < path.size(); ++i)
+              text += "end\n";
+            prm->parse_input_from_string(text, "command line: " + entry);
+          }
       }
     catch (const ExceptionBase &e)
       {
@@ -384,7 +401,10 @@ namespace PolyFrac
   void
   Parameters::read_values()
   {
-    dim = prm->get_integer("Dimension");
+    AssertThrow(prm->get_integer("Dimension") == static_cast<long>(dim),
+                ExcMessage("The Dimension of <" + file_name +
+                           "> must be set in the file itself (it is read "
+                           "before everything else)."));
 
     prm->enter_subsection("Expressions");
     constants.clear();

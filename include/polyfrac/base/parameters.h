@@ -43,9 +43,14 @@ namespace PolyFrac
     /** Declares the whole tree for dimension @p dim. */
     explicit Parameters(const unsigned int dim);
 
-    /** Parses @p file_name and validates every entry. */
+    /**
+     * Parses @p file_name, then the @p overrides ("Mesh/Cell type=simplex":
+     * subsections separated by '/', the value after '='), and validates
+     * every entry.
+     */
     void
-    parse(const std::string &file_name);
+    parse(const std::string              &file_name,
+          const std::vector<std::string> &overrides = {});
 
     /** Writes the used parameters (all entries, with their documentation). */
     void
