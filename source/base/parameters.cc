@@ -78,29 +78,47 @@ namespace PolyFrac
 
 
 
+  namespace
+  {
+    /** The Dimension set in @p file_name or its includes, 0 if none. */
+    unsigned int
+    find_dimension(const std::string &file_name)
+    {
+      std::ifstream in(file_name);
+      AssertThrow(in,
+                  ExcMessage("Cannot open the parameter file <" + file_name +
+                             ">: check the path."));
+      const std::regex set_dimension(
+        R"(^\s*set\s+Dimension\s*=\s*(\S+)\s*(#.*)?$)");
+      const std::regex include(R"(^\s*include\s+(\S+)\s*$)");
+      std::string      line;
+      unsigned int     dim = 0;
+      while (std::getline(in, line))
+        {
+          std::smatch match;
+          if (std::regex_match(line, match, include))
+            dim = std::max(dim, find_dimension(match[1]));
+          else if (std::regex_match(line, match, set_dimension))
+            {
+              AssertThrow(match[1] == "2" || match[1] == "3",
+                          ExcMessage("In <" + file_name +
+                                     ">: entry <Dimension> must be 2 or 3, "
+                                     "not <" +
+                                     std::string(match[1]) + ">."));
+              dim = std::stoi(match[1]);
+            }
+        }
+      return dim;
+    }
+  } // namespace
+
+
+
   unsigned int
   Parameters::read_dimension(const std::string &file_name)
   {
-    std::ifstream in(file_name);
-    AssertThrow(in,
-                ExcMessage("Cannot open the parameter file <" + file_name +
-                           ">: check the path."));
-    const std::regex pattern(R"(^\s*set\s+Dimension\s*=\s*(\S+)\s*(#.*)?$)");
-    std::string      line;
-    unsigned int     dim = 2;
-    while (std::getline(in, line))
-      {
-        std::smatch match;
-        if (std::regex_match(line, match, pattern))
-          {
-            AssertThrow(match[1] == "2" || match[1] == "3",
-                        ExcMessage("In <" + file_name +
-                                   ">: entry <Dimension> must be 2 or 3, not <" +
-                                   std::string(match[1]) + ">."));
-            dim = std::stoi(match[1]);
-          }
-      }
-    return dim;
+    const unsigned int dim = find_dimension(file_name);
+    return dim == 0 ? 2 : dim;
   }
 
 

@@ -36,7 +36,8 @@ namespace PolyFrac
   class Parameters
   {
   public:
-    /** Reads `set Dimension = d` from @p file_name (default 2). */
+    /** Reads `set Dimension = d` from @p file_name and the files it
+     * includes (default 2). */
     static unsigned int
     read_dimension(const std::string &file_name);
 
