@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_description.h>
@@ -14,7 +15,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <unordered_map>
 
 namespace PolyFrac
 {
@@ -182,6 +182,206 @@ namespace PolyFrac
                              "length or area)."));
       return normal / normal.norm();
     }
+
+    /**
+     * The vertex numbering of the triangulation: the nodes of the cells,
+     * by increasing gmsh node tag (so it depends on the mesh only).
+     */
+    class VertexNumbering
+    {
+    public:
+      /** Numbers the nodes of @p cells. */
+      explicit VertexNumbering(const std::vector<Element> &cells)
+      {
+        for (const Element &cell : cells)
+          for (const std::size_t node : cell.nodes)
+            vertex_of_node.emplace(node, 0);
+        unsigned int v = 0;
+        for (auto &entry : vertex_of_node)
+          entry.second = v++;
+      }
+
+      /** Number of vertices. */
+      unsigned int
+      n_vertices() const
+      {
+        return vertex_of_node.size();
+      }
+
+      /** Vertex of gmsh node @p node, or invalid if no cell uses it. */
+      unsigned int
+      operator()(const std::size_t node) const
+      {
+        const auto it = vertex_of_node.find(node);
+        return it == vertex_of_node.end() ? numbers::invalid_unsigned_int :
+                                            it->second;
+      }
+
+    private:
+      std::map<std::size_t, unsigned int> vertex_of_node;
+    };
+
+    /**
+     * Opens @p file_name in gmsh, meshes it if it is a `.geo` and refines
+     * it @p n_refinements times; turns gmsh's errors into an ExcMessage.
+     */
+    void
+    open_and_mesh(const std::string &file_name,
+                  const int          dim,
+                  const unsigned int n_refinements)
+    {
+      try
+        {
+          gmsh::open(file_name);
+          const bool is_geo =
+            file_name.size() >= 4 &&
+            file_name.compare(file_name.size() - 4, 4, ".geo") == 0;
+          if (is_geo)
+            gmsh::model::mesh::generate(dim);
+          for (unsigned int r = 0; r < n_refinements; ++r)
+            gmsh::model::mesh::refine();
+        }
+      catch (...)
+        {
+          // gmsh (AbortOnError = 2) throws on errors and keeps the message.
+          std::string error;
+          gmsh::logger::getLastError(error);
+          AssertThrow(false,
+                      ExcMessage("The gmsh mesh <" + file_name +
+                                 "> cannot be read or meshed by gmsh" +
+                                 (error.empty() ? "." : ": " + error)));
+        }
+    }
+
+    /** The coordinates of the vertices (the nodes of the cells). */
+    template <int dim>
+    std::vector<Point<dim>>
+    read_vertices(const VertexNumbering &numbering, const std::string &in_file)
+    {
+      std::vector<Point<dim>>  vertices(numbering.n_vertices());
+      std::vector<std::size_t> node_tags;
+      std::vector<double>      coordinates, parametric_coordinates;
+      gmsh::model::mesh::getNodes(
+        node_tags, coordinates, parametric_coordinates, -1, -1, false, false);
+      double extent = 0, largest_z = 0;
+      for (unsigned int i = 0; i < node_tags.size(); ++i)
+        {
+          const unsigned int v = numbering(node_tags[i]);
+          if (v == numbers::invalid_unsigned_int)
+            continue;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              vertices[v][d] = coordinates[3 * i + d];
+              extent = std::max(extent, std::abs(coordinates[3 * i + d]));
+            }
+          largest_z = std::max(largest_z, std::abs(coordinates[3 * i + 2]));
+        }
+      AssertThrow(dim == 3 || largest_z <= 1e-12 * extent,
+                  ExcMessage(in_file +
+                             " is two-dimensional but does not lie in the "
+                             "plane z = 0."));
+      return vertices;
+    }
+
+    /**
+     * Creates @p tria from the gmsh cells: deal.II vertex order, positive
+     * measure (gmsh orients a cell by its entity) and, for hypercubes,
+     * consistently oriented lines.
+     */
+    template <int dim>
+    void
+    create_cells(const std::vector<Element>    &elements,
+                 const VertexNumbering         &numbering,
+                 const std::vector<Point<dim>> &vertices,
+                 Triangulation<dim>            &tria)
+    {
+      std::vector<CellData<dim>> cells;
+      cells.reserve(elements.size());
+      bool all_hypercubes = true;
+      for (const Element &element : elements)
+        {
+          const std::vector<unsigned int> &deal_ii_to_gmsh =
+            supported_types().at(element.type).deal_ii_to_gmsh;
+          CellData<dim> cell(element.nodes.size());
+          for (unsigned int i = 0; i < element.nodes.size(); ++i)
+            cell.vertices[i] = numbering(element.nodes[deal_ii_to_gmsh[i]]);
+          all_hypercubes =
+            all_hypercubes &&
+            element.nodes.size() == GeometryInfo<dim>::vertices_per_cell;
+          cells.push_back(cell);
+        }
+      GridTools::invert_cells_with_negative_measure(vertices, cells);
+      if (all_hypercubes)
+        GridTools::consistently_order_cells(cells);
+      tria.clear();
+      tria.create_triangulation(vertices, cells, SubCellData());
+    }
+
+    /**
+     * Sets the boundary id of each boundary face of @p tria to the tag of
+     * the first physical group of @p groups (dimension dim-1, fracture tags
+     * left out) that has it as element, and to 0 if none has. An element
+     * of such a group that is not a boundary face is an error: it is most
+     * likely a fracture missing from Fractures/Gmsh physical tags.
+     */
+    template <int dim>
+    void
+    set_boundary_ids(const gmsh::vectorpair &groups,
+                     const std::vector<int> &fracture_tags,
+                     const VertexNumbering  &numbering,
+                     const std::string      &file_name,
+                     Triangulation<dim>     &tria)
+    {
+      const std::string in_file = "The gmsh mesh <" + file_name + ">";
+      std::map<std::vector<unsigned int>, types::boundary_id> boundary_id_of;
+      for (const auto &[group_dim, tag] : groups)
+        {
+          if (std::find(fracture_tags.begin(), fracture_tags.end(), tag) !=
+              fracture_tags.end())
+            continue;
+          for (const Element &element :
+               elements_of_physical_group(group_dim, tag, file_name))
+            {
+              std::vector<unsigned int> key;
+              for (const std::size_t node : element.nodes)
+                key.push_back(numbering(node));
+              std::sort(key.begin(), key.end());
+              AssertThrow(key.back() != numbers::invalid_unsigned_int,
+                          ExcMessage(in_file +
+                                     ": an element of physical group " +
+                                     std::to_string(tag) +
+                                     " is not a face of the mesh."));
+              boundary_id_of.emplace(key, tag);
+            }
+        }
+
+      std::set<std::vector<unsigned int>> used_keys;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              std::vector<unsigned int> key;
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                key.push_back(cell->face(f)->vertex_index(v));
+              std::sort(key.begin(), key.end());
+              const auto it = boundary_id_of.find(key);
+              if (it == boundary_id_of.end())
+                cell->face(f)->set_boundary_id(0);
+              else
+                {
+                  cell->face(f)->set_boundary_id(it->second);
+                  used_keys.insert(key);
+                }
+            }
+      for (const auto &[key, tag] : boundary_id_of)
+        AssertThrow(used_keys.count(key) == 1,
+                    ExcMessage(in_file + ": physical group " +
+                               std::to_string(tag) + " of dimension " +
+                               std::to_string(dim - 1) +
+                               " has elements inside the domain. If it is a "
+                               "fracture, list it in Fractures/Gmsh physical "
+                               "tags."));
+    }
   } // namespace
 #endif
 
@@ -189,8 +389,8 @@ namespace PolyFrac
 
   template <int dim>
   GmshMesh<dim>
-  read_gmsh(const Parameters  &prm,
-            const unsigned int n_refinements,
+  read_gmsh(const Parameters   &prm,
+            const unsigned int  n_refinements,
             Triangulation<dim> &tria)
   {
     const std::string &file_name = prm.mesh.file_name;
@@ -214,167 +414,44 @@ namespace PolyFrac
     return {};
 #else
     const std::string in_file = "The gmsh mesh <" + file_name + ">";
-    GmshMesh<dim>     result;
     GmshSession       session;
-    try
-      {
-        gmsh::open(file_name);
-        const bool is_geo = file_name.size() >= 4 &&
-                            file_name.compare(file_name.size() - 4, 4, ".geo") == 0;
-        if (is_geo)
-          gmsh::model::mesh::generate(dim);
-        for (unsigned int r = 0; r < n_refinements; ++r)
-          gmsh::model::mesh::refine();
-      }
-    catch (const std::exception &e)
-      {
-        AssertThrow(false,
-                    ExcMessage(in_file + " cannot be read or meshed by gmsh: " +
-                               e.what()));
-      }
-    catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage(in_file + " cannot be read or meshed by gmsh."));
-      }
+    open_and_mesh(file_name, dim, n_refinements);
     AssertThrow(gmsh::model::getDimension() == dim,
                 ExcMessage(in_file + " is " +
                            std::to_string(gmsh::model::getDimension()) +
                            "-dimensional, but Dimension = " +
                            std::to_string(dim) + "."));
 
-    // Cells: the dim-dimensional elements, on their own vertices (numbered
-    // by increasing node tag, so the numbering depends on the mesh only).
-    const std::vector<Element> volume_elements =
-      elements_of(dim, -1, file_name);
-    AssertThrow(!volume_elements.empty(),
+    const std::vector<Element> cells = elements_of(dim, -1, file_name);
+    AssertThrow(!cells.empty(),
                 ExcMessage(in_file + " has no elements of dimension " +
                            std::to_string(dim) + "."));
-    std::map<std::size_t, unsigned int> vertex_of_node;
-    for (const Element &element : volume_elements)
-      for (const std::size_t node : element.nodes)
-        vertex_of_node.emplace(node, 0);
-    {
-      unsigned int v = 0;
-      for (auto &[node, vertex] : vertex_of_node)
-        vertex = v++;
-    }
-    const auto vertex_index = [&](const std::size_t node) {
-      const auto it = vertex_of_node.find(node);
-      return it == vertex_of_node.end() ? numbers::invalid_unsigned_int :
-                                          it->second;
-    };
+    const VertexNumbering         numbering(cells);
+    const std::vector<Point<dim>> vertices =
+      read_vertices<dim>(numbering, in_file);
+    create_cells(cells, numbering, vertices, tria);
 
-    std::vector<Point<dim>> vertices(vertex_of_node.size());
-    {
-      std::vector<std::size_t> node_tags;
-      std::vector<double>      coordinates, parametric_coordinates;
-      gmsh::model::mesh::getNodes(
-        node_tags, coordinates, parametric_coordinates, -1, -1, false, false);
-      double extent = 0, largest_z = 0;
-      for (unsigned int i = 0; i < node_tags.size(); ++i)
-        {
-          const unsigned int v = vertex_index(node_tags[i]);
-          if (v == numbers::invalid_unsigned_int)
-            continue;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              vertices[v][d] = coordinates[3 * i + d];
-              extent = std::max(extent, std::abs(coordinates[3 * i + d]));
-            }
-          largest_z = std::max(largest_z, std::abs(coordinates[3 * i + 2]));
-        }
-      AssertThrow(dim == 3 || largest_z <= 1e-12 * extent,
-                  ExcMessage(in_file +
-                             " is two-dimensional but does not lie in the "
-                             "plane z = 0."));
-    }
-
-    std::vector<CellData<dim>> cells;
-    cells.reserve(volume_elements.size());
-    bool all_hypercubes = true;
-    for (const Element &element : volume_elements)
-      {
-        const std::vector<unsigned int> &deal_ii_to_gmsh =
-          supported_types().at(element.type).deal_ii_to_gmsh;
-        CellData<dim> cell(element.nodes.size());
-        for (unsigned int i = 0; i < element.nodes.size(); ++i)
-          cell.vertices[i] = vertex_index(element.nodes[deal_ii_to_gmsh[i]]);
-        all_hypercubes = all_hypercubes && element.nodes.size() ==
-                                             GeometryInfo<dim>::vertices_per_cell;
-        cells.push_back(cell);
-      }
-    // gmsh orients each cell by its entity; deal.II wants positive measure.
-    GridTools::invert_cells_with_negative_measure(vertices, cells);
-    if (all_hypercubes)
-      GridTools::consistently_order_cells(cells);
-    tria.clear();
-    tria.create_triangulation(vertices, cells, SubCellData());
-
-    // Boundary ids: the tag of the first non-fracture physical group of
-    // dimension dim-1 that covers the face, 0 otherwise.
     const std::vector<int> &fracture_tags = prm.fractures.gmsh_physical_tags;
     gmsh::vectorpair        groups;
     gmsh::model::getPhysicalGroups(groups, dim - 1);
-    std::map<std::vector<unsigned int>, types::boundary_id> boundary_id_of;
-    for (const auto &[group_dim, tag] : groups)
-      {
-        if (std::find(fracture_tags.begin(), fracture_tags.end(), tag) !=
-            fracture_tags.end())
-          continue;
-        for (const Element &element :
-             elements_of_physical_group(group_dim, tag, file_name))
-          {
-            std::vector<unsigned int> key;
-            for (const std::size_t node : element.nodes)
-              key.push_back(vertex_index(node));
-            std::sort(key.begin(), key.end());
-            AssertThrow(key.back() != numbers::invalid_unsigned_int,
-                        ExcMessage(in_file + ": an element of physical group " +
-                                   std::to_string(tag) +
-                                   " is not a face of the mesh."));
-            boundary_id_of.emplace(key, tag);
-          }
-      }
-    std::set<std::vector<unsigned int>> used_keys;
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            std::vector<unsigned int> key;
-            for (const unsigned int v : cell->face(f)->vertex_indices())
-              key.push_back(cell->face(f)->vertex_index(v));
-            std::sort(key.begin(), key.end());
-            const auto it = boundary_id_of.find(key);
-            cell->face(f)->set_boundary_id(it == boundary_id_of.end() ? 0 :
-                                                                        it->second);
-            if (it != boundary_id_of.end())
-              used_keys.insert(key);
-          }
-    for (const auto &[key, tag] : boundary_id_of)
-      AssertThrow(used_keys.count(key) == 1,
-                  ExcMessage(in_file + ": physical group " +
-                             std::to_string(tag) + " of dimension " +
-                             std::to_string(dim - 1) +
-                             " has elements inside the domain. If it is a "
-                             "fracture, list it in Fractures/Gmsh physical "
-                             "tags."));
+    set_boundary_ids(groups, fracture_tags, numbering, file_name, tria);
 
     // Fractures: one per listed tag, n^+ from each element's node order.
+    GmshMesh<dim> result;
     for (unsigned int i = 0; i < fracture_tags.size(); ++i)
       {
-        const int  tag       = fracture_tags[i];
-        const bool is_group  = std::find(groups.begin(),
-                                        groups.end(),
-                                        std::make_pair(dim - 1, tag)) !=
-                              groups.end();
-        const auto elements  = is_group ?
-                                 elements_of_physical_group(dim - 1, tag, file_name) :
-                                 std::vector<Element>();
+        const int  tag = fracture_tags[i];
+        const bool is_group =
+          std::find(groups.begin(),
+                    groups.end(),
+                    std::make_pair(dim - 1, tag)) != groups.end();
+        const auto elements =
+          is_group ? elements_of_physical_group(dim - 1, tag, file_name) :
+                     std::vector<Element>();
         AssertThrow(!elements.empty(),
                     ExcMessage(in_file + " has no element of dimension " +
-                               std::to_string(dim - 1) +
-                               " in physical group " + std::to_string(tag) +
+                               std::to_string(dim - 1) + " in physical group " +
+                               std::to_string(tag) +
                                ", listed in Fractures/Gmsh physical tags."));
         result.fracture_names.push_back("gmsh physical tag " +
                                         std::to_string(tag));
@@ -384,7 +461,7 @@ namespace PolyFrac
             fracture_element.fracture = i;
             for (const std::size_t node : element.nodes)
               {
-                fracture_element.vertices.push_back(vertex_index(node));
+                fracture_element.vertices.push_back(numbering(node));
                 AssertThrow(fracture_element.vertices.back() !=
                               numbers::invalid_unsigned_int,
                             ExcMessage(

@@ -2,6 +2,7 @@
 #define polyfrac_mesh_gmsh_reader_h
 
 #include <deal.II/base/tensor.h>
+
 #include <deal.II/grid/tria.h>
 
 #include <polyfrac/base/parameters.h>
@@ -90,8 +91,8 @@ namespace PolyFrac
    */
   template <int dim>
   GmshMesh<dim>
-  read_gmsh(const Parameters  &prm,
-            const unsigned int n_refinements,
+  read_gmsh(const Parameters   &prm,
+            const unsigned int  n_refinements,
             Triangulation<dim> &tria);
 } // namespace PolyFrac
 
