@@ -320,6 +320,54 @@ namespace PolyFrac
                       "local refinement, distortion and agglomeration.");
     prm.leave_subsection();
 
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Friction law",
+                      "Coulomb",
+                      Patterns::Selection("frictionless|Tresca|Coulomb"),
+                      "Friction on the fracture faces in contact. Tresca: the "
+                      "threshold below, normal and tangential states "
+                      "independent. Coulomb: quasi-static, threshold F lambda_n, "
+                      "slip increments between load steps.");
+    prm.declare_entry("Friction coefficient",
+                      "0.57735",
+                      Patterns::Double(),
+                      "Coulomb friction coefficient F >= 0.");
+    prm.declare_entry("Tresca threshold",
+                      "1",
+                      Patterns::Anything(),
+                      "Tresca threshold g >= 0 (expression, evaluated at the "
+                      "face centroids).");
+    prm.declare_entry("Bubbles",
+                      "true",
+                      Patterns::Bool(),
+                      "false: no bubble unknowns (they are fixed to zero), for "
+                      "the stability study.");
+    prm.declare_entry("Complementarity parameter",
+                      "auto",
+                      Patterns::Anything(),
+                      "beta > 0 of the complementarity functions, or auto: "
+                      "(2 mu + lambda)/h_sigma on each fracture face.");
+    prm.declare_entry("Number of load steps",
+                      "1",
+                      Patterns::Integer(1),
+                      "Step k scales body force, Dirichlet and Neumann data and "
+                      "p_f by k/N (not the friction data). A continuation for "
+                      "Tresca and frictionless; quasi-static steps for Coulomb.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Nonlinear solver");
+    prm.declare_entry("Maximum iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Newton iterations per load step.");
+    prm.declare_entry("Tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "Newton stops when the active sets are unchanged and both "
+                      "relative residuals (momentum, complementarity) are below "
+                      "this.");
+    prm.leave_subsection();
+
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
                       "direct",
@@ -419,6 +467,7 @@ namespace PolyFrac
   void
   Parameters::read_values()
   {
+    warnings.clear();
     AssertThrow(prm->get_integer("Dimension") == static_cast<long>(dim),
                 ExcMessage("The Dimension of <" + file_name +
                            "> must be set in the file itself (it is read "
@@ -562,6 +611,44 @@ namespace PolyFrac
     n_refinement_levels = prm->get_integer("Number of refinement levels");
     prm->leave_subsection();
 
+    prm->enter_subsection("Contact");
+    const std::string cwhere = "In <" + file_name + ">, subsection <Contact>";
+    contact.friction_law         = prm->get("Friction law");
+    contact.friction_coefficient = prm->get_double("Friction coefficient");
+    AssertThrow(contact.friction_coefficient >= 0,
+                ExcMessage(cwhere + ": <Friction coefficient> must be >= 0, "
+                                    "not " +
+                           prm->get("Friction coefficient") + "."));
+    contact.tresca_threshold = prm->get("Tresca threshold");
+    contact.bubbles          = prm->get_bool("Bubbles");
+    {
+      const std::string beta = Utilities::trim(prm->get("Complementarity parameter"));
+      contact.beta           = 0;
+      if (beta != "auto")
+        {
+          try
+            {
+              contact.beta = Utilities::string_to_double(beta);
+            }
+          catch (...)
+            {
+              contact.beta = -1;
+            }
+          AssertThrow(contact.beta > 0,
+                      ExcMessage(cwhere +
+                                 ": <Complementarity parameter> must be auto "
+                                 "or a positive number, not <" +
+                                 beta + ">."));
+        }
+    }
+    contact.n_load_steps = prm->get_integer("Number of load steps");
+    prm->leave_subsection();
+
+    prm->enter_subsection("Nonlinear solver");
+    nonlinear.max_iterations = prm->get_integer("Maximum iterations");
+    nonlinear.tolerance      = prm->get_double("Tolerance");
+    prm->leave_subsection();
+
     prm->enter_subsection("Linear solver");
     solver.method         = prm->get("Method");
     solver.tolerance      = prm->get_double("Tolerance");
@@ -574,13 +661,48 @@ namespace PolyFrac
     output.print_timings = prm->get_bool("Print timings");
     prm->leave_subsection();
 
-    if (model == "elasticity" && !exact.contact_traction.empty())
-      warnings.push_back("Exact solution/Contact traction is not used by "
-                         "Model = elasticity (the traction is prescribed)");
-    AssertThrow(model == "elasticity" || file_name.empty(),
-                ExcMessage("In <" + file_name + ">: Model = " + model +
-                           " is not available in this version of PolyFrac; "
-                           "use Model = elasticity."));
+    warn_unused_entries();
+    AssertThrow(model != "poromechanics" || file_name.empty(),
+                ExcMessage("In <" + file_name +
+                           ">: Model = poromechanics is not available in this "
+                           "version of PolyFrac; use elasticity or contact "
+                           "mechanics."));
+  }
+
+
+
+  void
+  Parameters::warn_unused_entries()
+  {
+    // Entries the chosen model ignores, warned about when set (differ
+    // from their default).
+    ParameterHandler defaults;
+    declare(defaults, dim);
+    const auto warn_if_set = [&](const std::string &subsection,
+                                 const std::string &entry) {
+      prm->enter_subsection(subsection);
+      defaults.enter_subsection(subsection);
+      if (prm->get(entry) != defaults.get(entry))
+        warnings.push_back(subsection + "/" + entry + " is not used by Model = " +
+                           model + " and is ignored");
+      prm->leave_subsection();
+      defaults.leave_subsection();
+    };
+    if (model == "elasticity")
+      {
+        for (const std::string entry : {"Friction law",
+                                        "Friction coefficient",
+                                        "Tresca threshold",
+                                        "Bubbles",
+                                        "Complementarity parameter",
+                                        "Number of load steps"})
+          warn_if_set("Contact", entry);
+        warn_if_set("Nonlinear solver", "Maximum iterations");
+        warn_if_set("Nonlinear solver", "Tolerance");
+        warn_if_set("Exact solution", "Contact traction");
+      }
+    else
+      warn_if_set("Fractures", "Traction");
   }
 
 

@@ -77,6 +77,41 @@ namespace PolyFrac
           }
         errors.jump = ratio(e, n);
       }
+    if (!prm.exact.contact_traction.empty())
+      {
+        const auto exact = make_expression<dim>("Exact solution/Contact traction",
+                                                prm.exact.contact_traction,
+                                                dim,
+                                                prm.constants);
+        // err_lambda_hm12 weighs each face by h_σ and divides by diam(Ω):
+        // a computable surrogate of the H^{-1/2}(Γ) error.
+        Point<dim> lower = geometry.mesh.vertices[0], upper = lower;
+        for (const Point<dim> &p : geometry.mesh.vertices)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], p[d]);
+              upper[d] = std::max(upper[d], p[d]);
+            }
+        const double   diameter = lower.distance(upper);
+        double         e = 0, e_h = 0, n = 0;
+        Vector<double> value(dim);
+        for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+          {
+            const auto &face = geometry.faces[network.fracture_faces[i].face];
+            exact->vector_value(face.centroid, value);
+            const Tensor<1, dim> lambda_h = elasticity.fracture_traction(i);
+            double               difference = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                difference += std::pow(value(d) - lambda_h[d], 2);
+                n += face.measure * value(d) * value(d);
+              }
+            e += face.measure * difference;
+            e_h += face.diameter * face.measure * difference;
+          }
+        errors.lambda_l2   = ratio(e, n);
+        errors.lambda_hm12 = ratio(e_h, diameter * n);
+      }
     return errors;
   }
 

@@ -70,7 +70,7 @@ namespace PolyFrac
     /** Expressions/Function constants, as name -> value. */
     std::map<std::string, double> constants;
 
-    /** Model/Model: elasticity | contact mechanics | poromechanics. */
+    /** Model/Model: elasticity | contact mechanics (poromechanics: not yet). */
     std::string model;
 
     /** Mesh. */
@@ -123,6 +123,25 @@ namespace PolyFrac
 
     unsigned int n_refinement_levels;
 
+    /** Contact (Model = contact mechanics). */
+    struct ContactData
+    {
+      std::string  friction_law;
+      double       friction_coefficient;
+      std::string  tresca_threshold;
+      bool         bubbles;
+      /** β > 0, or 0 for auto: (2μ + λ)/h_σ per fracture face. */
+      double       beta;
+      unsigned int n_load_steps;
+    } contact;
+
+    /** Nonlinear solver (semi-smooth Newton). */
+    struct NonlinearData
+    {
+      unsigned int max_iterations;
+      double       tolerance;
+    } nonlinear;
+
     /** Linear solver. */
     struct SolverData
     {
@@ -145,6 +164,10 @@ namespace PolyFrac
 
     void
     read_values();
+
+    /** Warns about entries the chosen model does not use but that are set. */
+    void
+    warn_unused_entries();
 
     /** Throws naming the file and @p entry if @p expression does not have
      * dim components (the single value `0` means the zero vector). */

@@ -5,6 +5,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
@@ -31,8 +32,11 @@ namespace PolyFrac
    * file, and u = g_D on the node sides of the Dirichlet boundary (each
    * side takes the one-sided limit of g_D from its own cells).
    *
-   * Linear solvers: UMFPACK, or CG with Trilinos ML AMG given the
-   * translation modes of the node-side unknowns.
+   * Linear solvers: UMFPACK on a deal.II matrix, or CG with Trilinos ML
+   * AMG on a Trilinos matrix. The matrix is assembled straight into the
+   * format of the chosen solver, so only one copy of it is ever held. AMG
+   * is given the rigid-body modes (translations and rotations) of the
+   * node-side unknowns as near null space.
    */
   template <int dim>
   class Elasticity
@@ -83,6 +87,19 @@ namespace PolyFrac
     FullMatrix<double>
     local_stiffness(const LocalReconstruction<dim> &local) const;
 
+    /**
+     * Adds the cell stiffness matrices and body-force loads to
+     * @p system_matrix and #rhs: a SparseMatrix<double> for UMFPACK or a
+     * TrilinosWrappers::SparseMatrix for AMG.
+     */
+    template <typename MatrixType>
+    void
+    assemble_cells(MatrixType &system_matrix);
+
+    /** CG preconditioned by ML AMG; returns the number of iterations. */
+    unsigned int
+    solve_amg();
+
     const Parameters           &prm;
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;
@@ -92,9 +109,13 @@ namespace PolyFrac
       fracture_pressure, traction;
 
     AffineConstraints<double> constraints;
-    SparsityPattern           sparsity;
-    SparseMatrix<double>      matrix;
-    Vector<double>            rhs;
+    /** Pattern of #matrix (the Trilinos matrix keeps its own). */
+    SparsityPattern sparsity;
+    /** System matrix for Linear solver/Method = direct. */
+    SparseMatrix<double> matrix;
+    /** System matrix for Linear solver/Method = AMG. */
+    TrilinosWrappers::SparseMatrix trilinos_matrix;
+    Vector<double>                 rhs;
   };
 } // namespace PolyFrac
 
