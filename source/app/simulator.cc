@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <polyfrac/app/simulator.h>
+#include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/mesh/gmsh_reader.h>
 #include <polyfrac/mesh/mesh_builder.h>
@@ -199,24 +200,40 @@ namespace PolyFrac
     discretization.print_summary(out);
 
     const double setup_time = timer.wall_time();
-    Elasticity<dim> elasticity(prm, geometry, network, dofs);
-    elasticity.assemble();
-    const double       assembly_time = timer.wall_time() - setup_time;
-    const unsigned int iterations    = elasticity.solve();
-    const double       wall          = timer.wall_time();
-    if (prm.solver.method == "AMG")
-      out << "CG iterations: " << iterations << std::endl;
+    std::unique_ptr<Elasticity<dim>>       elasticity;
+    std::unique_ptr<ContactMechanics<dim>> contact;
+    std::optional<unsigned int>            newton_iterations;
+    types::global_dof_index                n_unknowns;
+    if (prm.model == "contact mechanics")
+      {
+        contact = std::make_unique<ContactMechanics<dim>>(prm, geometry, network, dofs);
+        contact->solve(out);
+        newton_iterations = contact->n_newton_iterations();
+        n_unknowns        = contact->n_unknowns();
+        out << "Newton iterations: " << *newton_iterations << std::endl;
+      }
+    else
+      {
+        elasticity = std::make_unique<Elasticity<dim>>(prm, geometry, network, dofs);
+        elasticity->assemble();
+        const unsigned int iterations = elasticity->solve();
+        n_unknowns                    = elasticity->n_unknowns();
+        if (prm.solver.method == "AMG")
+          out << "CG iterations: " << iterations << std::endl;
+      }
+    const Elasticity<dim> &mechanics =
+      contact ? contact->displacement() : *elasticity;
+    const double wall = timer.wall_time();
     if (prm.output.print_timings)
-      out << "Wall time: mesh " << setup_time << " s, assembly "
-          << assembly_time << " s, solve "
-          << wall - setup_time - assembly_time << " s" << std::endl;
+      out << "Wall time: mesh " << setup_time << " s, assembly and solve "
+          << wall - setup_time << " s" << std::endl;
 
     ConvergenceRow row{level,
                        geometry.max_diameter(),
                        geometry.mesh.n_cells(),
-                       static_cast<unsigned int>(elasticity.n_unknowns()),
-                       compute_errors(prm, geometry, network, dofs, elasticity),
-                       {},
+                       static_cast<unsigned int>(n_unknowns),
+                       compute_errors(prm, geometry, network, dofs, mechanics),
+                       newton_iterations,
                        wall};
 
     if (prm.output.write_vtu)
@@ -226,12 +243,16 @@ namespace PolyFrac
                          geometry,
                          network,
                          dofs,
-                         elasticity);
+                         mechanics);
         if (network.n_fracture_faces() > 0)
           write_fracture_vtu(prm.output.directory + "/fractures" + suffix,
                              geometry,
                              network,
-                             elasticity);
+                             mechanics,
+                             contact ? contact->normal_state :
+                                       std::vector<NormalState>(),
+                             contact ? contact->tangential_state :
+                                       std::vector<TangentialState>());
       }
     return row;
   }
@@ -278,7 +299,7 @@ namespace PolyFrac
     for (const auto &[name, member] : columns)
       if (!rows.empty() && rows[0].errors.*member)
         {
-          out << std::setw(14)
+          out << std::setw(22)
               << name + ((rows[0].errors.*member)->absolute ? "(abs)" : "");
           if (with_rates)
             out << std::setw(7) << "rate";
@@ -293,16 +314,17 @@ namespace PolyFrac
         for (const auto &[name, member] : columns)
           if (row.errors.*member)
             {
-              out << std::setw(14) << std::scientific << std::setprecision(5)
+              out << std::setw(22) << std::scientific << std::setprecision(5)
                   << (row.errors.*member)->value << std::defaultfloat;
               if (with_rates)
                 {
-                  if (r == 0)
+                  const double previous = (rows[r - 1 + (r == 0)].errors.*member)->value;
+                  if (r == 0 || std::abs(rows[r - 1].h / row.h - 1) < 1e-3 ||
+                      previous <= 0 || (row.errors.*member)->value <= 0)
                     out << std::setw(7) << "-";
                   else
                     out << std::setw(7) << std::fixed << std::setprecision(2)
-                        << std::log((rows[r - 1].errors.*member)->value /
-                                    (row.errors.*member)->value) /
+                        << std::log(previous / (row.errors.*member)->value) /
                              std::log(rows[r - 1].h / row.h)
                         << std::defaultfloat;
                 }

@@ -169,10 +169,12 @@ namespace PolyFrac
 
   template <int dim>
   void
-  write_fracture_vtu(const std::string          &file_name,
-                     const MeshGeometry<dim>    &geometry,
-                     const FractureNetwork<dim> &network,
-                     const Elasticity<dim>      &elasticity)
+  write_fracture_vtu(const std::string                  &file_name,
+                     const MeshGeometry<dim>            &geometry,
+                     const FractureNetwork<dim>         &network,
+                     const Elasticity<dim>              &elasticity,
+                     const std::vector<NormalState>     &normal_state,
+                     const std::vector<TangentialState> &tangential_state)
   {
     std::vector<Point<dim>>                points;
     std::vector<std::vector<unsigned int>> cells;
@@ -215,6 +217,17 @@ namespace PolyFrac
     write_array(out, "traction", 3, traction);
     write_array(out, "normal_traction", 1, traction_n);
     write_array(out, "tangential_traction", 3, traction_t);
+    if (!normal_state.empty())
+      {
+        std::vector<double> normal, tangential;
+        for (unsigned int i = 0; i < normal_state.size(); ++i)
+          {
+            normal.push_back(static_cast<int>(normal_state[i]));
+            tangential.push_back(static_cast<int>(tangential_state[i]));
+          }
+        write_array(out, "normal_state", 1, normal);
+        write_array(out, "tangential_state", 1, tangential);
+      }
     out << "</CellData>\n";
     write_footer(out);
   }
@@ -237,10 +250,14 @@ namespace PolyFrac
   write_fracture_vtu(const std::string &,
                      const MeshGeometry<2> &,
                      const FractureNetwork<2> &,
-                     const Elasticity<2> &);
+                     const Elasticity<2> &,
+                     const std::vector<NormalState> &,
+                     const std::vector<TangentialState> &);
   template void
   write_fracture_vtu(const std::string &,
                      const MeshGeometry<3> &,
                      const FractureNetwork<3> &,
-                     const Elasticity<3> &);
+                     const Elasticity<3> &,
+                     const std::vector<NormalState> &,
+                     const std::vector<TangentialState> &);
 } // namespace PolyFrac

@@ -210,13 +210,38 @@ namespace PolyFrac
         trilinos_matrix.reinit(dsp);
     }
     if (prm.solver.method == "direct")
-      assemble_cells(matrix);
+      assemble_cells(constraints, matrix, rhs);
     else
       {
-        assemble_cells(trilinos_matrix);
+        assemble_cells(constraints, trilinos_matrix, rhs);
         trilinos_matrix.compress(VectorOperation::add);
       }
 
+    assemble_face_loads(constraints, rhs, true);
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::assemble_operator(SparseMatrix<double> &system_matrix,
+                                     Vector<double>       &system_rhs) const
+  {
+    AffineConstraints<double> none;
+    none.close();
+    assemble_cells(none, system_matrix, system_rhs);
+    assemble_face_loads(none, system_rhs, false);
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::assemble_face_loads(const AffineConstraints<double> &c,
+                                       Vector<double>                  &system_rhs,
+                                       const bool with_prescribed_traction) const
+  {
+    const auto &mesh = geometry.mesh;
     // Face loads: Neumann traction on the boundary, prescribed pressure and
     // multiplier on the fractures. Both are Σ |σ| load · (coefficients).
     const auto add_face_load = [&](const BlockCoefficients &coefficients,
@@ -229,7 +254,7 @@ namespace PolyFrac
             face_dofs.push_back(dim * coefficients[k].first + d);
             b(dim * k + d) = coefficients[k].second * load[d];
           }
-      constraints.distribute_local_to_global(b, face_dofs, rhs);
+      c.distribute_local_to_global(b, face_dofs, system_rhs);
     };
 
     const auto &neumann_ids = prm.boundary.neumann_ids;
@@ -251,7 +276,7 @@ namespace PolyFrac
         const unsigned int f = network.fracture_faces[i].face;
         const Tensor<1, dim> load =
           -geometry.faces[f].measure *
-          (fracture_traction(i) +
+          ((with_prescribed_traction ? fracture_traction(i) : Tensor<1, dim>()) +
            fracture_pressure->value(geometry.faces[f].centroid) * network.normal(i));
         add_face_load(jump(geometry, dofs, network, i), load);
       }
@@ -262,15 +287,17 @@ namespace PolyFrac
   template <int dim>
   template <typename MatrixType>
   void
-  Elasticity<dim>::assemble_cells(MatrixType &system_matrix)
+  Elasticity<dim>::assemble_cells(const AffineConstraints<double> &c,
+                                  MatrixType                      &system_matrix,
+                                  Vector<double>                  &system_rhs) const
   {
     Vector<double> f(dim);
-    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
+    for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
       {
-        const LocalReconstruction<dim> local(geometry, dofs, network, c);
+        const LocalReconstruction<dim> local(geometry, dofs, network, cell);
         const FullMatrix<double>       A = local_stiffness(local);
         Vector<double>                 b(A.m());
-        for (const auto &q : geometry.quadrature(c))
+        for (const auto &q : geometry.quadrature(cell))
           {
             body_force->vector_value(q.point, f);
             for (unsigned int t = 0; t < local.n_local(); ++t)
@@ -280,8 +307,8 @@ namespace PolyFrac
                   b(dim * t + d) += f(d) * phi;
               }
           }
-        constraints.distribute_local_to_global(
-          A, b, dofs.cell_dofs(c), system_matrix, rhs);
+        c.distribute_local_to_global(
+          A, b, dofs.cell_dofs(cell), system_matrix, system_rhs);
       }
   }
 
@@ -291,6 +318,8 @@ namespace PolyFrac
   Tensor<1, dim>
   Elasticity<dim>::fracture_traction(const unsigned int i) const
   {
+    if (!multipliers.empty())
+      return multipliers[i];
     Vector<double> value(dim);
     traction->vector_value(geometry.faces[network.fracture_faces[i].face].centroid,
                            value);
@@ -298,6 +327,17 @@ namespace PolyFrac
     for (unsigned int d = 0; d < dim; ++d)
       result[d] = value(d);
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::set_solution(const Vector<double>              &u,
+                                const std::vector<Tensor<1, dim>> &lambda)
+  {
+    solution    = u;
+    multipliers = lambda;
   }
 
 

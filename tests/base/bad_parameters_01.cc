@@ -1,12 +1,15 @@
 // Checks that bad parameter files stop with a clear error naming the file
 // and the entry: unknown entry, wrong pattern, wrong number of vector
 // components, unparsable expression, bad dimension, missing mesh file,
-// unresolved fracture, no Dirichlet boundary, unavailable model.
+// unresolved fracture, no Dirichlet boundary, unavailable model; for contact
+// mechanics: no fracture, negative friction coefficient or Tresca threshold,
+// beta <= 0 or not a number, unresolved fracture.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <polyfrac/app/simulator.h>
+#include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
 
 #include "../tests.h"
@@ -31,8 +34,13 @@ check(const std::string &name, const std::string &content, const bool write = tr
       prm.parse(file);
       AssertThrow(dim == 2, ExcInternalError());
       const LevelDiscretization<2> level(prm, 0);
-      Elasticity<2> elasticity(prm, *level.geometry, *level.network, *level.dofs);
-      elasticity.assemble();
+      if (prm.model == "contact mechanics")
+        ContactMechanics<2>(prm, *level.geometry, *level.network, *level.dofs);
+      else
+        {
+          Elasticity<2> elasticity(prm, *level.geometry, *level.network, *level.dofs);
+          elasticity.assemble();
+        }
       std::cout << "no error" << std::endl;
     }
   catch (const ExceptionBase &e)
@@ -66,4 +74,20 @@ main(int argc, char **argv)
         "subsection Model\n  set Model = poromechanics\nend\n");
   check("bad_fracture", "subsection Fractures\n  set Segments = 0, 0 : 1, 1 : 2, 2\nend\n");
   check("missing_file_itself", "", false);
+
+  // Contact mechanics.
+  const std::string contact = "subsection Model\n  set Model = contact mechanics\nend\n";
+  const std::string fracture = "subsection Fractures\n  set Segments = 0, -1 : 0, 1\nend\n";
+  check("contact_without_fracture", contact);
+  check("negative_friction",
+        contact + fracture + "subsection Contact\n  set Friction coefficient = -0.5\nend\n");
+  check("negative_threshold",
+        contact + fracture +
+          "subsection Contact\n  set Friction law = Tresca\n  set Tresca threshold = y\nend\n");
+  check("zero_beta",
+        contact + fracture + "subsection Contact\n  set Complementarity parameter = 0\nend\n");
+  check("bad_beta",
+        contact + fracture + "subsection Contact\n  set Complementarity parameter = large\nend\n");
+  check("unresolved_fracture_contact",
+        contact + "subsection Fractures\n  set Segments = 0.1, -1 : 0.1, 1\nend\n");
 }

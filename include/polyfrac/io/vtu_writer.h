@@ -1,6 +1,7 @@
 #ifndef polyfrac_io_vtu_writer_h
 #define polyfrac_io_vtu_writer_h
 
+#include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
 
 #include <string>
@@ -22,7 +23,8 @@ namespace PolyFrac
    * write_fracture_vtu(): the fracture faces (segments or polygons) with
    * cell data: fracture index, n^+, the jump [u] (global), its normal part
    * [u]_n = [u]·n^+ and tangential part [u]_τ, the traction λ (global), λ_n
-   * and λ_τ.
+   * and λ_τ; with contact, the states `normal_state` (0 open, 1 contact)
+   * and `tangential_state` (0 stick, 1 slip, 2 free: no friction acts).
    */
   template <int dim>
   void
@@ -34,10 +36,12 @@ namespace PolyFrac
 
   template <int dim>
   void
-  write_fracture_vtu(const std::string          &file_name,
-                     const MeshGeometry<dim>    &geometry,
-                     const FractureNetwork<dim> &network,
-                     const Elasticity<dim>      &elasticity);
+  write_fracture_vtu(const std::string                  &file_name,
+                     const MeshGeometry<dim>            &geometry,
+                     const FractureNetwork<dim>         &network,
+                     const Elasticity<dim>              &elasticity,
+                     const std::vector<NormalState>     &normal_state = {},
+                     const std::vector<TangentialState> &tangential_state = {});
 } // namespace PolyFrac
 
 #endif

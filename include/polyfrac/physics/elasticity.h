@@ -74,27 +74,64 @@ namespace PolyFrac
     Tensor<2, dim>
     stress(const unsigned int c) const;
 
-    /** Prescribed fracture load λ(x̄_σ) on fracture face @p i. */
+    /**
+     * λ_σ on fracture face @p i: the prescribed λ(x̄_σ), or the multiplier
+     * given by set_solution() (contact mechanics).
+     */
     Tensor<1, dim>
     fracture_traction(const unsigned int i) const;
+
+    /** The Dirichlet constraints of the node sides (values g_D). */
+    void
+    make_constraints();
+
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    /**
+     * Adds the unconstrained operator A and load F (body force, Neumann
+     * traction, fracture pressure; no prescribed traction) to
+     * @p system_matrix and @p system_rhs, which may be larger than the
+     * displacement block (the contact saddle-point system).
+     */
+    void
+    assemble_operator(SparseMatrix<double> &system_matrix,
+                      Vector<double>       &system_rhs) const;
+
+    /** Sets the displacement and the multipliers computed elsewhere. */
+    void
+    set_solution(const Vector<double>              &u,
+                 const std::vector<Tensor<1, dim>> &multipliers);
 
     Vector<double> solution;
 
   private:
-    void
-    make_constraints();
-
     FullMatrix<double>
     local_stiffness(const LocalReconstruction<dim> &local) const;
 
     /**
-     * Adds the cell stiffness matrices and body-force loads to
-     * @p system_matrix and #rhs: a SparseMatrix<double> for UMFPACK or a
-     * TrilinosWrappers::SparseMatrix for AMG.
+     * Adds the cell stiffness matrices and body-force loads, condensed by
+     * @p c, to @p system_matrix and @p system_rhs: a SparseMatrix<double>
+     * for UMFPACK or a TrilinosWrappers::SparseMatrix for AMG.
      */
     template <typename MatrixType>
     void
-    assemble_cells(MatrixType &system_matrix);
+    assemble_cells(const AffineConstraints<double> &c,
+                   MatrixType                      &system_matrix,
+                   Vector<double>                  &system_rhs) const;
+
+    /**
+     * Adds the face loads Σ |σ| load · (coefficients): the Neumann
+     * traction, the fracture pressure and (if @p with_prescribed_traction)
+     * the prescribed multiplier.
+     */
+    void
+    assemble_face_loads(const AffineConstraints<double> &c,
+                        Vector<double>                  &system_rhs,
+                        const bool with_prescribed_traction) const;
 
     /** CG preconditioned by ML AMG; returns the number of iterations. */
     unsigned int
@@ -116,6 +153,8 @@ namespace PolyFrac
     /** System matrix for Linear solver/Method = AMG. */
     TrilinosWrappers::SparseMatrix trilinos_matrix;
     Vector<double>                 rhs;
+    /** Multipliers set by set_solution(); empty when λ is prescribed. */
+    std::vector<Tensor<1, dim>> multipliers;
   };
 } // namespace PolyFrac
 

@@ -1,0 +1,472 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <polyfrac/base/expressions.h>
+#include <polyfrac/contact/contact_mechanics.h>
+
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+namespace PolyFrac
+{
+  template <int dim>
+  ContactMechanics<dim>::ContactMechanics(const Parameters           &prm,
+                                          const MeshGeometry<dim>    &geometry,
+                                          const FractureNetwork<dim> &network,
+                                          const DoFMap<dim>          &dofs)
+    : prm(prm)
+    , geometry(geometry)
+    , network(network)
+    , dofs(dofs)
+    , elasticity(prm, geometry, network, dofs)
+    , friction_law(prm.contact.friction_law)
+    , friction_coefficient(prm.contact.friction_coefficient)
+  {
+    const unsigned int n_faces = network.n_fracture_faces();
+    for (unsigned int i = 0; i < n_faces; ++i)
+      jumps.push_back(jump(geometry, dofs, network, i));
+    AssertThrow(n_faces > 0,
+                ExcMessage("In <" + prm.file_name +
+                           ">: Model = contact mechanics needs at least one "
+                           "fracture (Fractures/Segments, Polygons or Gmsh "
+                           "physical tags)."));
+
+    // β_σ: scale-aware (2μ + λ)/h_σ unless given; the Tresca threshold at
+    // the face centroid.
+    const auto g = make_expression<dim>("Contact/Tresca threshold",
+                                        prm.contact.tresca_threshold,
+                                        1,
+                                        prm.constants);
+    for (unsigned int i = 0; i < n_faces; ++i)
+      {
+        const auto &face = geometry.faces[network.fracture_faces[i].face];
+        beta.push_back(prm.contact.beta > 0 ?
+                         prm.contact.beta :
+                         (2 * prm.lame_mu + prm.lame_lambda) / face.diameter);
+        threshold.push_back(friction_law == "Tresca" ? g->value(face.centroid) :
+                                                       0.);
+        if (threshold.back() < 0)
+          {
+            std::ostringstream where;
+            where << face.centroid;
+            AssertThrow(false,
+                        ExcMessage("In <" + prm.file_name +
+                                   ">: Contact/Tresca threshold is negative (" +
+                                   std::to_string(threshold.back()) +
+                                   ") at the fracture face centred at " +
+                                   where.str() + "."));
+          }
+      }
+
+    // Dirichlet values of the node sides; without bubbles, the bubbles
+    // are fixed to zero (the stability study).
+    elasticity.make_constraints();
+    for (const auto &line : elasticity.get_constraints().get_lines())
+      dirichlet[line.index] = line.inhomogeneity;
+    if (!prm.contact.bubbles)
+      for (unsigned int i = 0; i < n_faces; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          dirichlet[dofs.bubble_dof(i, d)] = 0.;
+
+    // The pattern of the whole saddle-point system (u, λ).
+    const types::global_dof_index n = dofs.n_displacement_dofs() + dim * n_faces;
+    DynamicSparsityPattern        dsp(n);
+    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
+      {
+        const auto local = dofs.cell_dofs(c);
+        for (const auto a : local)
+          for (const auto b : local)
+            dsp.add(a, b);
+      }
+    for (unsigned int i = 0; i < n_faces; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          for (unsigned int e = 0; e < dim; ++e)
+            dsp.add(dofs.multiplier_dof(i, d), dofs.multiplier_dof(i, e));
+          for (const auto &[block, w] : jumps[i])
+            for (unsigned int e = 0; e < dim; ++e)
+              {
+                dsp.add(dofs.multiplier_dof(i, d), dim * block + e);
+                dsp.add(dim * block + e, dofs.multiplier_dof(i, d));
+              }
+        }
+    sparsity.copy_from(dsp);
+    stiffness.reinit(sparsity);
+    load_vector.reinit(n);
+    elasticity.assemble_operator(stiffness, load_vector);
+
+    // Norm of the assembled load: F − A u_D on the free dofs.
+    Vector<double> lifting(n), reduced(n);
+    for (const auto &[dof, value] : dirichlet)
+      lifting(dof) = value;
+    stiffness.vmult(reduced, lifting);
+    reduced.sadd(-1., load_vector);
+    for (const auto &[dof, value] : dirichlet)
+      reduced(dof) = 0;
+    load_norm = reduced.l2_norm();
+
+    solution.reinit(n);
+    previous_step.reinit(n);
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  ContactMechanics<dim>::frame(const unsigned int i) const
+  {
+    const Tensor<1, dim> n = network.normal(i);
+    Tensor<2, dim>       Q;
+    Q[0] = n;
+    if constexpr (dim == 2)
+      {
+        // τ = (B − A)/|B − A| for n^+ = left normal of A -> B.
+        Q[1][0] = n[1];
+        Q[1][1] = -n[0];
+      }
+    else
+      {
+        const auto &ff = network.fracture_faces[i];
+        Tensor<1, 3> t = network.fractures.empty() ?
+                           Tensor<1, 3>() :
+                           network.fractures[ff.fracture].tangents[0];
+        if (t.norm() < 0.5)
+          {
+            // Tagged fractures: any unit vector orthogonal to n.
+            t[std::abs(n[0]) < 0.9 ? 0 : 1] = 1;
+            t -= (t * n) * n;
+            t /= t.norm();
+          }
+        Q[1] = t;
+        Q[2] = cross_product_3d(n, t);
+      }
+    return Q;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactMechanics<dim>::face_jump(const Vector<double> &x,
+                                   const unsigned int    i) const
+  {
+    Tensor<1, dim> j;
+    for (const auto &[block, w] : jumps[i])
+      for (unsigned int d = 0; d < dim; ++d)
+        j[d] += w * x(dim * block + d);
+    return j;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactMechanics<dim>::face_multiplier(const Vector<double> &x,
+                                         const unsigned int    i) const
+  {
+    Tensor<1, dim> lambda;
+    for (unsigned int d = 0; d < dim; ++d)
+      lambda[d] = x(dofs.multiplier_dof(i, d));
+    return lambda;
+  }
+
+
+
+  template <int dim>
+  typename ContactMechanics<dim>::Residual
+  ContactMechanics<dim>::residual(const Vector<double> &x,
+                                  const double          load,
+                                  SparseMatrix<double> *jacobian) const
+  {
+    const unsigned int n_faces = network.n_fracture_faces();
+    Residual           R;
+    R.vector.reinit(x.size());
+    R.normal.resize(n_faces);
+    R.tangential.resize(n_faces);
+    stiffness.vmult(R.vector, x);
+    R.vector.add(-load, load_vector);
+    if (jacobian)
+      jacobian->copy_from(stiffness);
+
+    double complementarity = 0, measure = 0, stress_scale = 0;
+    for (unsigned int i = 0; i < n_faces; ++i)
+      {
+        const double         area = geometry.faces[network.fracture_faces[i].face].measure;
+        const Tensor<2, dim> Q    = frame(i);
+        const Tensor<1, dim> lambda = Q * face_multiplier(x, i);
+        const Tensor<1, dim> j      = Q * face_jump(x, i);
+        const Tensor<1, dim> j_old =
+          friction_law == "Coulomb" ? Q * face_jump(previous_step, i) :
+                                      Tensor<1, dim>();
+        const double b = beta[i];
+
+        // b_n, b_τ and the threshold g of §6.
+        const double   b_n = lambda[0] + b * j[0];
+        Tensor<1, dim> b_t;
+        for (unsigned int d = 1; d < dim; ++d)
+          b_t[d] = lambda[d] + b * (j[d] - j_old[d]);
+        const double b_t_norm = b_t.norm();
+        const bool   in_contact = b_n > 0;
+        const double g = friction_law == "Coulomb" ?
+                           friction_coefficient * std::max(b_n, 0.) :
+                           threshold[i];
+
+        // Local residual R = λ − (projections) and its generalised
+        // derivatives M_λ = ∂R/∂λ, M_j = ∂R/∂[[u]] (local components).
+        Tensor<1, dim> r_local;
+        Tensor<2, dim> M_lambda, M_jump;
+        R.normal[i] = in_contact ? NormalState::contact : NormalState::open;
+        if (in_contact)
+          {
+            r_local[0]     = lambda[0] - b_n;
+            M_jump[0][0]   = -b;
+          }
+        else
+          {
+            r_local[0]     = lambda[0];
+            M_lambda[0][0] = 1;
+          }
+
+        const bool frictionless_face =
+          friction_law == "frictionless" ||
+          (friction_law == "Coulomb" && !in_contact);
+        if (frictionless_face)
+          {
+            R.tangential[i] = TangentialState::free;
+            for (unsigned int d = 1; d < dim; ++d)
+              {
+                r_local[d]     = lambda[d];
+                M_lambda[d][d] = 1;
+              }
+          }
+        else if (b_t_norm <= g)
+          {
+            R.tangential[i] = TangentialState::stick;
+            for (unsigned int d = 1; d < dim; ++d)
+              {
+                r_local[d]   = lambda[d] - b_t[d];
+                M_jump[d][d] = -b;
+              }
+          }
+        else
+          {
+            // λ_τ = g b_τ/|b_τ|: dP = (g/|b_τ|)(I − b̂ b̂^T) db_τ + b̂ dg.
+            R.tangential[i]          = TangentialState::slip;
+            const Tensor<1, dim> hat = b_t / b_t_norm;
+            for (unsigned int d = 1; d < dim; ++d)
+              {
+                r_local[d] = lambda[d] - g * hat[d];
+                for (unsigned int e = 1; e < dim; ++e)
+                  {
+                    const double P =
+                      (g / b_t_norm) * ((d == e ? 1. : 0.) - hat[d] * hat[e]);
+                    M_lambda[d][e] = (d == e ? 1. : 0.) - P;
+                    M_jump[d][e]   = -b * P;
+                  }
+                if (friction_law == "Coulomb")
+                  {
+                    M_lambda[d][0] = -friction_coefficient * hat[d];
+                    M_jump[d][0]   = -friction_coefficient * b * hat[d];
+                  }
+              }
+          }
+
+        complementarity += area * r_local.norm_square();
+        measure += area;
+        stress_scale = std::max({stress_scale, lambda.norm(), std::abs(b_n), b_t_norm});
+
+        // Momentum: Σ |σ| λ_σ·[[v]]_σ. Complementarity rows: −|σ|/β Q^T R.
+        const Tensor<1, dim> lambda_global = transpose(Q) * lambda;
+        const Tensor<1, dim> r_global      = transpose(Q) * r_local;
+        const double         scale         = -area / b;
+        for (unsigned int d = 0; d < dim; ++d)
+          R.vector(dofs.multiplier_dof(i, d)) = scale * r_global[d];
+        for (const auto &[block, w] : jumps[i])
+          for (unsigned int d = 0; d < dim; ++d)
+            R.vector(dim * block + d) += area * w * lambda_global[d];
+
+        if (jacobian)
+          {
+            const Tensor<2, dim> G_lambda = scale * transpose(Q) * M_lambda * Q;
+            const Tensor<2, dim> G_jump   = scale * transpose(Q) * M_jump * Q;
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int e = 0; e < dim; ++e)
+                jacobian->add(dofs.multiplier_dof(i, d),
+                              dofs.multiplier_dof(i, e),
+                              G_lambda[d][e]);
+            for (const auto &[block, w] : jumps[i])
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  jacobian->add(dim * block + d, dofs.multiplier_dof(i, d), area * w);
+                  for (unsigned int e = 0; e < dim; ++e)
+                    jacobian->add(dofs.multiplier_dof(i, d),
+                                  dim * block + e,
+                                  w * G_jump[d][e]);
+                }
+          }
+      }
+
+    // Dirichlet dofs: fixed, so no residual and an identity row.
+    for (const auto &[dof, value] : dirichlet)
+      {
+        R.vector(dof) = 0;
+        if (jacobian)
+          {
+            const double diagonal = std::max(std::abs(stiffness.diag_element(dof)), 1e-300);
+            for (auto entry = jacobian->begin(dof); entry != jacobian->end(dof); ++entry)
+              entry->value() = 0;
+            jacobian->set(dof, dof, diagonal);
+          }
+      }
+
+    Vector<double> momentum(R.vector);
+    for (unsigned int i = 0; i < n_faces; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        momentum(dofs.multiplier_dof(i, d)) = 0;
+    const double load_scale = load * load_norm;
+    R.momentum        = load_scale > 0 ? momentum.l2_norm() / load_scale : momentum.l2_norm();
+    R.complementarity = stress_scale > 0 ?
+                          std::sqrt(complementarity / measure) / stress_scale :
+                          std::sqrt(complementarity);
+    return R;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactMechanics<dim>::newton(const double    load,
+                                Vector<double> &x,
+                                std::ostream   &out)
+  {
+    for (const auto &[dof, value] : dirichlet)
+      x(dof) = load * value;
+
+    SparseMatrix<double>       jacobian(sparsity);
+    std::set<std::vector<int>> seen_states;
+    std::vector<int>           last_states;
+    const auto                 merit = [](const Residual &R) {
+      return R.momentum * R.momentum + R.complementarity * R.complementarity;
+    };
+
+    for (unsigned int it = 1; it <= prm.nonlinear.max_iterations; ++it)
+      {
+        const Residual R = residual(x, load, &jacobian);
+        ++total_iterations;
+
+        std::vector<int> states;
+        unsigned int     n_open = 0, n_stick = 0, n_slip = 0;
+        for (unsigned int i = 0; i < R.normal.size(); ++i)
+          {
+            states.push_back(2 * static_cast<int>(R.normal[i]) +
+                             8 * static_cast<int>(R.tangential[i]));
+            n_open += R.normal[i] == NormalState::open;
+            n_stick += R.tangential[i] == TangentialState::stick;
+            n_slip += R.tangential[i] == TangentialState::slip;
+          }
+        out << "  Newton " << std::setw(2) << it << ": momentum "
+            << std::scientific << std::setprecision(2) << R.momentum
+            << ", complementarity " << R.complementarity << std::defaultfloat
+            << "; open " << n_open << ", stick " << n_stick << ", slip "
+            << n_slip << std::endl;
+
+        if (states == last_states && R.momentum < prm.nonlinear.tolerance &&
+            R.complementarity < prm.nonlinear.tolerance)
+          return true;
+
+        // A state seen before: the active set cycles, so damp the step.
+        const bool cycling = !seen_states.insert(states).second && states != last_states;
+        last_states    = states;
+
+        Vector<double> step(x.size()), rhs(R.vector);
+        rhs *= -1.;
+        SparseDirectUMFPACK direct;
+        direct.initialize(jacobian);
+        direct.vmult(step, rhs);
+
+        double alpha = 1;
+        if (cycling)
+          {
+            Vector<double> trial(x.size());
+            for (; alpha > 1. / 64; alpha /= 2)
+              {
+                trial = x;
+                trial.add(alpha, step);
+                if (merit(residual(trial, load, nullptr)) < merit(R))
+                  break;
+              }
+            out << "  (active set cycles: damped step " << alpha << ")"
+                << std::endl;
+          }
+        x.add(alpha, step);
+      }
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::solve(std::ostream &out)
+  {
+    const unsigned int n_steps = prm.contact.n_load_steps;
+    double             reached = 0;
+    for (unsigned int k = 1; k <= n_steps; ++k)
+      {
+        const double target = static_cast<double>(k) / n_steps;
+        // Cut the increment in halves when Newton fails (at most 5 times).
+        double increment = target - reached;
+        while (reached < target - 1e-14)
+          {
+            const double   load = std::min(target, reached + increment);
+            Vector<double> x    = solution;
+            if (n_steps > 1 || load < 1)
+              out << " Load step to " << load << std::endl;
+            if (newton(load, x, out))
+              {
+                solution      = x;
+                previous_step = x;
+                reached       = load;
+              }
+            else
+              {
+                increment /= 2;
+                AssertThrow(increment > (target - reached) / 32,
+                            ExcMessage(
+                              "The contact solver did not converge at load "
+                              "factor " +
+                              std::to_string(load) + " (" + friction_law +
+                              "): Newton reached " +
+                              std::to_string(prm.nonlinear.max_iterations) +
+                              " iterations, with damped steps on active-set "
+                              "cycles and 5 load-step cuts. See the "
+                              "iterations above for the residuals and the "
+                              "open/stick/slip counts; try more load steps, "
+                              "a different Contact/Complementarity "
+                              "parameter or a larger Nonlinear "
+                              "solver/Maximum iterations."));
+                out << "  Newton did not converge: cutting the load step" << std::endl;
+              }
+          }
+      }
+
+    const Residual R = residual(solution, 1., nullptr);
+    normal_state     = R.normal;
+    tangential_state = R.tangential;
+
+    Vector<double> u(dofs.n_displacement_dofs());
+    for (unsigned int k = 0; k < u.size(); ++k)
+      u(k) = solution(k);
+    std::vector<Tensor<1, dim>> multipliers;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      multipliers.push_back(face_multiplier(solution, i));
+    elasticity.set_solution(u, multipliers);
+  }
+
+
+
+  template class ContactMechanics<2>;
+  template class ContactMechanics<3>;
+} // namespace PolyFrac
