@@ -347,6 +347,8 @@ namespace PolyFrac
     SparseMatrix<double>       jacobian(sparsity);
     std::set<std::vector<int>> seen_states;
     std::vector<int>           last_states;
+    double                     best_merit     = std::numeric_limits<double>::max();
+    unsigned int               best_iteration = 0;
     const auto                 merit = [](const Residual &R) {
       return R.momentum * R.momentum + R.complementarity * R.complementarity;
     };
@@ -376,9 +378,29 @@ namespace PolyFrac
             R.complementarity < prm.nonlinear.tolerance)
           return true;
 
-        // A state seen before: the active set cycles, so damp the step.
+        // The active set cycles (a state seen before) or stagnates (no new
+        // best residual for 4 iterations). The contact conditions hold for
+        // every β > 0, so first make β smaller, which weakens the coupling
+        // of the states to the jump (up to three times); then damp.
         const bool cycling = !seen_states.insert(states).second && states != last_states;
-        last_states    = states;
+        last_states        = states;
+        if (merit(R) < best_merit)
+          {
+            best_merit     = merit(R);
+            best_iteration = it;
+          }
+        if ((cycling || it >= best_iteration + 4) && n_beta_reductions < 3)
+          {
+            ++n_beta_reductions;
+            for (double &b : beta)
+              b /= 10;
+            seen_states.clear();
+            best_merit     = std::numeric_limits<double>::max();
+            best_iteration = it;
+            out << "  (active set " << (cycling ? "cycles" : "stagnates")
+                << ": complementarity parameter divided by 10)" << std::endl;
+            continue;
+          }
 
         Vector<double> step(x.size()), rhs(R.vector);
         rhs *= -1.;
@@ -440,8 +462,11 @@ namespace PolyFrac
                               std::to_string(load) + " (" + friction_law +
                               "): Newton reached " +
                               std::to_string(prm.nonlinear.max_iterations) +
-                              " iterations, with damped steps on active-set "
-                              "cycles and 5 load-step cuts. See the "
+                              " iterations, after dividing the "
+                              "complementarity parameter by 10 (" +
+                              std::to_string(n_beta_reductions) +
+                              " times) and damped steps on active-set "
+                              "cycles, and 5 load-step cuts. See the "
                               "iterations above for the residuals and the "
                               "open/stick/slip counts; try more load steps, "
                               "a different Contact/Complementarity "

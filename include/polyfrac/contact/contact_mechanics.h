@@ -52,10 +52,12 @@ namespace PolyFrac
    * residuals are below `Nonlinear solver/Tolerance`: the momentum
    * residual over the norm of the assembled load, and the complementarity
    * residual (Σ_σ |σ| |R_σ|²)^{1/2} over a stress scale times |Γ|^{1/2}.
-   * Active-set cycling (a state seen before without residual decrease) is
-   * met by a damped step (backtracking on the residual); a load step that
-   * does not converge is cut in halves; when everything fails, the solver
-   * stops with an error that says what it tried and where.
+   * Active-set cycling (a state seen before) or stagnation (no new best
+   * residual in 4 iterations) is met first by dividing β by
+   * 10 (at most three times: the conditions hold for every β > 0), then by
+   * damped steps (backtracking on the residual); a load step that does not
+   * converge is cut in halves; when everything fails, the solver stops with
+   * an error that says what it tried.
    */
   template <int dim>
   class ContactMechanics
@@ -148,7 +150,9 @@ namespace PolyFrac
     double               load_norm;
 
     Vector<double> solution, previous_step;
-    unsigned int   total_iterations = 0;
+    unsigned int   total_iterations  = 0;
+    /** How often β was divided by 10 on active-set cycling. */
+    unsigned int   n_beta_reductions = 0;
   };
 } // namespace PolyFrac
 
