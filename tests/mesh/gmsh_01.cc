@@ -1,12 +1,12 @@
-// Mesh/Source = gmsh in 2D: a .geo with an embedded inclined fracture line is
-// meshed and refined through the gmsh API; checks cells, boundary ids, the
-// fracture faces (count, n^+ from the node order, + side, covered length)
-// and the node sides on levels 0 and 1.
+// Mesh/Source = gmsh in 2D and 3D: a .geo with an embedded inclined
+// fracture (a line in 2D, a planar quadrilateral in 3D) is meshed and
+// refined through the gmsh API; checks cells, boundary ids, the fracture
+// faces (count, n^+ from the node order, + side, covered measure) and the
+// node sides on levels 0 and 1.
 
 #include <polyfrac/app/simulator.h>
 
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <map>
 
@@ -21,22 +21,33 @@ namespace
     return r == 0 ? 0. : r;
   }
 
+  template <int dim>
   void
-  check_level(const Parameters &prm, const unsigned int level)
+  print_vector(const Tensor<1, dim> &v)
   {
-    const LevelDiscretization<2> discretization(prm, level);
-    const auto                  &mesh     = *discretization.mesh;
-    const auto                  &geometry = *discretization.geometry;
-    const auto                  &network  = *discretization.network;
+    for (unsigned int d = 0; d < dim; ++d)
+      std::cout << (d == 0 ? "" : " ") << rounded(v[d]);
+  }
 
-    std::cout << "Level " << level << std::endl;
-    std::cout
-      << "n_cells: " << mesh.n_cells() << " (deal.II cells "
-      << discretization.triangulation.n_active_cells() << ", "
-      << (discretization.triangulation.all_reference_cells_are_simplex() ?
-            "triangles" :
-            "not only triangles")
-      << ")" << std::endl;
+  template <int dim>
+  void
+  check_level(const Parameters     &prm,
+              const unsigned int    level,
+              const Tensor<1, dim> &exact_normal,
+              const double          exact_measure)
+  {
+    const LevelDiscretization<dim> discretization(prm, level);
+    const auto                    &mesh     = *discretization.mesh;
+    const auto                    &geometry = *discretization.geometry;
+    const auto                    &network  = *discretization.network;
+
+    std::cout << dim << "D level " << level << std::endl;
+    std::cout << "n_cells: " << mesh.n_cells() << " (deal.II cells "
+              << discretization.triangulation.n_active_cells() << ", "
+              << (discretization.triangulation.all_reference_cells_are_simplex() ?
+                    "simplices" :
+                    "not only simplices")
+              << ")" << std::endl;
 
     std::map<unsigned int, unsigned int> boundary_faces;
     for (const auto &face : mesh.faces)
@@ -52,29 +63,30 @@ namespace
               << "), fracture faces: " << network.n_fracture_faces()
               << std::endl;
 
-    const Tensor<1, 2> normal      = network.normal(0);
-    bool               same_normal = true, plus_side = true;
-    double             length = 0;
+    const Tensor<1, dim> normal      = network.normal(0);
+    bool                 same_normal = true, plus_side = true;
+    double               measure = 0;
     for (const auto &ff : network.fracture_faces)
       {
-        same_normal       = same_normal && (ff.normal - normal).norm() < 1e-12;
-        const Point<2> &x = geometry.faces[ff.face].centroid;
-        plus_side         = plus_side &&
+        same_normal = same_normal && (ff.normal - normal).norm() < 1e-12;
+        const Point<dim> &x = geometry.faces[ff.face].centroid;
+        plus_side = plus_side &&
                     (geometry.cells[ff.plus_cell].centroid - x) * normal < 0 &&
                     (geometry.cells[ff.minus_cell].centroid - x) * normal > 0;
-        length += geometry.faces[ff.face].measure;
+        measure += geometry.faces[ff.face].measure;
       }
-    std::cout << "n+ = " << rounded(normal[0]) << ' ' << rounded(normal[1])
-              << " (exact " << rounded(-0.4 / std::sqrt(0.41)) << ' '
-              << rounded(0.5 / std::sqrt(0.41))
-              << "), same on every face: " << (same_normal ? "yes" : "no")
+    std::cout << "n+ = ";
+    print_vector(normal);
+    std::cout << " (exact ";
+    print_vector(exact_normal);
+    std::cout << "), same on every face: " << (same_normal ? "yes" : "no")
               << std::endl;
     std::cout << "+ cells on the side opposite to n+: "
               << (plus_side ? "yes" : "no") << std::endl;
-    std::cout << "covered length " << rounded(length) << " vs exact "
-              << rounded(std::sqrt(0.41)) << ", relative difference "
-              << (std::abs(length / std::sqrt(0.41) - 1) < 1e-12 ? "< 1e-12" :
-                                                                   ">= 1e-12")
+    std::cout << "covered measure " << rounded(measure) << " vs exact "
+              << rounded(exact_measure) << ", relative difference "
+              << (std::abs(measure / exact_measure - 1) < 1e-12 ? "< 1e-12" :
+                                                                  ">= 1e-12")
               << std::endl;
 
     const std::vector<unsigned int> histogram =
@@ -84,15 +96,31 @@ namespace
       std::cout << ' ' << k << ':' << histogram[k];
     std::cout << std::endl;
   }
+
+  template <int dim>
+  void
+  check(const std::string    &geo,
+        const Tensor<1, dim> &exact_normal,
+        const double          exact_measure)
+  {
+    Parameters prm(dim);
+    prm.mesh.source                  = "gmsh";
+    prm.mesh.file_name               = std::string(SOURCE_DIR) + "/" + geo;
+    prm.fractures.gmsh_physical_tags = {10};
+    for (unsigned int level = 0; level < 2; ++level)
+      check_level<dim>(prm, level, exact_normal, exact_measure);
+  }
 } // namespace
 
 int
 main()
 {
-  Parameters prm(2);
-  prm.mesh.source                  = "gmsh";
-  prm.mesh.file_name               = std::string(SOURCE_DIR) + "/gmsh_01.geo";
-  prm.fractures.gmsh_physical_tags = {10};
-  for (unsigned int level = 0; level < 2; ++level)
-    check_level(prm, level);
+  // 2D: the line (0.25, 0.3) -> (0.75, 0.7), n+ its left normal.
+  check<2>("gmsh_01.geo",
+           Tensor<1, 2>({-0.4 / std::sqrt(0.41), 0.5 / std::sqrt(0.41)}),
+           std::sqrt(0.41));
+  // 3D: the plane z = 0.3 + (x - 0.3)/2, loop normal (-1, 0, 2)/√5.
+  check<3>("gmsh_02.geo",
+           Tensor<1, 3>({-1 / std::sqrt(5.), 0, 2 / std::sqrt(5.)}),
+           0.4 * std::sqrt(0.2));
 }
