@@ -17,7 +17,7 @@ main(int argc, char **argv)
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string argument = argc > 1 ? argv[1] : "";
+      const std::string                argument = argc > 1 ? argv[1] : "";
       if (argument == "--print-parameters")
         {
           Parameters::print_defaults(argc > 2 ? std::stoi(argv[2]) : 2,
@@ -26,7 +26,8 @@ main(int argc, char **argv)
         }
       const bool        has_file = argc > 1 && argument != "--set";
       const std::string file =
-        has_file ? argument : std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm";
+        has_file ? argument :
+                   std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm";
       std::vector<std::string> overrides;
       for (int i = has_file ? 2 : 1; i < argc; ++i)
         {

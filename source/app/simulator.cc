@@ -87,18 +87,16 @@ namespace PolyFrac
     if (from_gmsh)
       {
         AssertThrow(fractures.empty(),
-                    ExcMessage((prm.file_name.empty() ?
-                                  std::string() :
-                                  "In <" + prm.file_name + ">: ") +
-                               "Fractures/" +
-                               (dim == 2 ? "Segments" : "Polygons") +
-                               " cannot be combined with Mesh/Source = gmsh: "
-                               "give the fractures as physical groups of the "
-                               "mesh and list them in Fractures/Gmsh physical "
-                               "tags."));
-        gmsh_mesh = read_gmsh(prm,
-                              prm.mesh.global_refinements + level,
-                              triangulation);
+                    ExcMessage(
+                      (prm.file_name.empty() ? std::string() :
+                                               "In <" + prm.file_name + ">: ") +
+                      "Fractures/" + (dim == 2 ? "Segments" : "Polygons") +
+                      " cannot be combined with Mesh/Source = gmsh: "
+                      "give the fractures as physical groups of the "
+                      "mesh and list them in Fractures/Gmsh physical "
+                      "tags."));
+        gmsh_mesh =
+          read_gmsh(prm, prm.mesh.global_refinements + level, triangulation);
       }
     else
       {
@@ -190,23 +188,24 @@ namespace PolyFrac
   ConvergenceRow
   Simulator<dim>::run_level(const unsigned int level, std::ostream &out)
   {
-    Timer timer;
+    Timer                          timer;
     const LevelDiscretization<dim> discretization(prm, level);
-    const auto &geometry = *discretization.geometry;
-    const auto &network  = *discretization.network;
-    const auto &dofs     = *discretization.dofs;
+    const auto                    &geometry = *discretization.geometry;
+    const auto                    &network  = *discretization.network;
+    const auto                    &dofs     = *discretization.dofs;
 
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
 
-    const double setup_time = timer.wall_time();
+    const double                           setup_time = timer.wall_time();
     std::unique_ptr<Elasticity<dim>>       elasticity;
     std::unique_ptr<ContactMechanics<dim>> contact;
     std::optional<unsigned int>            newton_iterations;
     types::global_dof_index                n_unknowns;
     if (prm.model == "contact mechanics")
       {
-        contact = std::make_unique<ContactMechanics<dim>>(prm, geometry, network, dofs);
+        contact =
+          std::make_unique<ContactMechanics<dim>>(prm, geometry, network, dofs);
         contact->solve(out);
         newton_iterations = contact->n_newton_iterations();
         n_unknowns        = contact->n_unknowns();
@@ -214,7 +213,8 @@ namespace PolyFrac
       }
     else
       {
-        elasticity = std::make_unique<Elasticity<dim>>(prm, geometry, network, dofs);
+        elasticity =
+          std::make_unique<Elasticity<dim>>(prm, geometry, network, dofs);
         elasticity->assemble();
         const unsigned int iterations = elasticity->solve();
         n_unknowns                    = elasticity->n_unknowns();
@@ -269,7 +269,8 @@ namespace PolyFrac
     const std::vector<Column> columns = {{"err_u", &Errors::u},
                                          {"err_grad_u", &Errors::grad_u},
                                          {"err_jump", &Errors::jump},
-                                         {"err_lambda_hm12", &Errors::lambda_hm12},
+                                         {"err_lambda_hm12",
+                                          &Errors::lambda_hm12},
                                          {"err_lambda_l2", &Errors::lambda_l2}};
     if (csv)
       {
@@ -308,9 +309,9 @@ namespace PolyFrac
     for (unsigned int r = 0; r < rows.size(); ++r)
       {
         const ConvergenceRow &row = rows[r];
-        out << std::setw(6) << row.level << std::setw(12) << std::setprecision(5)
-            << row.h << std::setw(10) << row.n_cells << std::setw(10)
-            << row.n_dofs;
+        out << std::setw(6) << row.level << std::setw(12)
+            << std::setprecision(5) << row.h << std::setw(10) << row.n_cells
+            << std::setw(10) << row.n_dofs;
         for (const auto &[name, member] : columns)
           if (row.errors.*member)
             {
@@ -318,7 +319,8 @@ namespace PolyFrac
                   << (row.errors.*member)->value << std::defaultfloat;
               if (with_rates)
                 {
-                  const double previous = (rows[r - 1 + (r == 0)].errors.*member)->value;
+                  const double previous =
+                    (rows[r - 1 + (r == 0)].errors.*member)->value;
                   if (r == 0 || std::abs(rows[r - 1].h / row.h - 1) < 1e-3 ||
                       previous <= 0 || (row.errors.*member)->value <= 0)
                     out << std::setw(7) << "-";

@@ -15,7 +15,8 @@ namespace PolyFrac
                   const std::map<std::string, double> &constants)
   {
     // A step of 1e-6 for the central differences of gradient().
-    auto function = std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-6);
+    auto function =
+      std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-6);
     std::map<std::string, double> all_constants = constants;
     all_constants.emplace("pi", numbers::PI);
     all_constants.emplace("Pi", numbers::PI);
@@ -56,7 +57,7 @@ namespace PolyFrac
              const Point<dim>    &inside)
   {
     const Tensor<1, dim> step = 1e-6 * (inside - x);
-    Vector<double>       near(function.n_components), far(function.n_components);
+    Vector<double> near(function.n_components), far(function.n_components);
     function.vector_value(x + step, near);
     function.vector_value(x + 2 * step, far);
     near *= 2.;

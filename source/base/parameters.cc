@@ -156,13 +156,13 @@ namespace PolyFrac
     prm.leave_subsection();
 
     prm.enter_subsection("Model");
-    prm.declare_entry("Model",
-                      "elasticity",
-                      Patterns::Selection(
-                        "elasticity|contact mechanics|poromechanics"),
-                      "Physics of the scene. elasticity: linear elasticity with "
-                      "a prescribed load on the fractures (pressure and "
-                      "traction).");
+    prm.declare_entry(
+      "Model",
+      "elasticity",
+      Patterns::Selection("elasticity|contact mechanics|poromechanics"),
+      "Physics of the scene. elasticity: linear elasticity with "
+      "a prescribed load on the fractures (pressure and "
+      "traction).");
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh");
@@ -192,11 +192,12 @@ namespace PolyFrac
                       "0",
                       Patterns::Integer(0, 12),
                       "Global refinements of the base mesh (level 0).");
-    prm.declare_entry("Local refinement box",
-                      repeated("-0.5", dim) + " : " + repeated("0.5", dim),
-                      Patterns::Anything(),
-                      "Closed box <lower : upper>; cells whose centre lies in it "
-                      "are refined <Local refinements> more times.");
+    prm.declare_entry(
+      "Local refinement box",
+      repeated("-0.5", dim) + " : " + repeated("0.5", dim),
+      Patterns::Anything(),
+      "Closed box <lower : upper>; cells whose centre lies in it "
+      "are refined <Local refinements> more times.");
     prm.declare_entry("Local refinements",
                       "0",
                       Patterns::Integer(0, 8),
@@ -208,15 +209,17 @@ namespace PolyFrac
                       "Vertex perturbation as a fraction of the local mesh "
                       "size. Fracture, boundary, tip and intersection vertices "
                       "are kept where the geometry requires.");
-    prm.declare_entry("Distortion type",
-                      "random",
-                      Patterns::Selection("random|smooth"),
-                      "random: independent perturbation of each vertex. smooth: "
-                      "a sine map (Kershaw-like) that bends faces.");
-    prm.declare_entry("Random seed",
-                      "0",
-                      Patterns::Integer(0),
-                      "Seed of the random distortion (results are repeatable).");
+    prm.declare_entry(
+      "Distortion type",
+      "random",
+      Patterns::Selection("random|smooth"),
+      "random: independent perturbation of each vertex. smooth: "
+      "a sine map (Kershaw-like) that bends faces.");
+    prm.declare_entry(
+      "Random seed",
+      "0",
+      Patterns::Integer(0),
+      "Seed of the random distortion (results are repeatable).");
     prm.declare_entry("Cells per polytope",
                       "1",
                       Patterns::Integer(1),
@@ -321,13 +324,14 @@ namespace PolyFrac
     prm.leave_subsection();
 
     prm.enter_subsection("Contact");
-    prm.declare_entry("Friction law",
-                      "Coulomb",
-                      Patterns::Selection("frictionless|Tresca|Coulomb"),
-                      "Friction on the fracture faces in contact. Tresca: the "
-                      "threshold below, normal and tangential states "
-                      "independent. Coulomb: quasi-static, threshold F lambda_n, "
-                      "slip increments between load steps.");
+    prm.declare_entry(
+      "Friction law",
+      "Coulomb",
+      Patterns::Selection("frictionless|Tresca|Coulomb"),
+      "Friction on the fracture faces in contact. Tresca: the "
+      "threshold below, normal and tangential states "
+      "independent. Coulomb: quasi-static, threshold F lambda_n, "
+      "slip increments between load steps.");
     prm.declare_entry("Friction coefficient",
                       "0.57735",
                       Patterns::Double(),
@@ -347,12 +351,13 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "beta > 0 of the complementarity functions, or auto: "
                       "(2 mu + lambda)/h_sigma on each fracture face.");
-    prm.declare_entry("Number of load steps",
-                      "1",
-                      Patterns::Integer(1),
-                      "Step k scales body force, Dirichlet and Neumann data and "
-                      "p_f by k/N (not the friction data). A continuation for "
-                      "Tresca and frictionless; quasi-static steps for Coulomb.");
+    prm.declare_entry(
+      "Number of load steps",
+      "1",
+      Patterns::Integer(1),
+      "Step k scales body force, Dirichlet and Neumann data and "
+      "p_f by k/N (not the friction data). A continuation for "
+      "Tresca and frictionless; quasi-static steps for Coulomb.");
     prm.leave_subsection();
 
     prm.enter_subsection("Nonlinear solver");
@@ -360,12 +365,13 @@ namespace PolyFrac
                       "50",
                       Patterns::Integer(1),
                       "Newton iterations per load step.");
-    prm.declare_entry("Tolerance",
-                      "1e-10",
-                      Patterns::Double(0),
-                      "Newton stops when the active sets are unchanged and both "
-                      "relative residuals (momentum, complementarity) are below "
-                      "this.");
+    prm.declare_entry(
+      "Tolerance",
+      "1e-10",
+      Patterns::Double(0),
+      "Newton stops when the active sets are unchanged and both "
+      "relative residuals (momentum, complementarity) are below "
+      "this.");
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");
@@ -385,11 +391,12 @@ namespace PolyFrac
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
-    prm.declare_entry("Output directory",
-                      "output",
-                      Patterns::Anything(),
-                      "Where VTU files, convergence.csv and the used parameters "
-                      "go (created if missing).");
+    prm.declare_entry(
+      "Output directory",
+      "output",
+      Patterns::Anything(),
+      "Where VTU files, convergence.csv and the used parameters "
+      "go (created if missing).");
     prm.declare_entry("Write VTU",
                       "true",
                       Patterns::Bool(),
@@ -427,7 +434,8 @@ namespace PolyFrac
             std::string text;
             for (unsigned int i = 0; i + 1 < path.size(); ++i)
               text += "subsection " + path[i] + "\n";
-            text += "set " + path.back() + " = " + entry.substr(equal + 1) + "\n";
+            text +=
+              "set " + path.back() + " = " + entry.substr(equal + 1) + "\n";
             for (unsigned int i = 0; i + 1 < path.size(); ++i)
               text += "end\n";
             prm->parse_input_from_string(text, "command line: " + entry);
@@ -494,8 +502,9 @@ namespace PolyFrac
     mesh.cell_type = prm->get("Cell type");
     mesh.lower_left =
       parse_point(prm->get("Lower left corner"), dim, where + " <Lower left>");
-    mesh.upper_right =
-      parse_point(prm->get("Upper right corner"), dim, where + " <Upper right>");
+    mesh.upper_right = parse_point(prm->get("Upper right corner"),
+                                   dim,
+                                   where + " <Upper right>");
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(mesh.lower_left[d] < mesh.upper_right[d],
                   ExcMessage(where + ": <Lower left corner> must be below "
@@ -512,9 +521,8 @@ namespace PolyFrac
                           dim,
                           where + " <Local refinement box>");
       AssertThrow(box.size() == 1 && box[0].size() == 2,
-                  ExcMessage(where +
-                             ": <Local refinement box> must read "
-                             "<lower corner : upper corner>."));
+                  ExcMessage(where + ": <Local refinement box> must read "
+                                     "<lower corner : upper corner>."));
       mesh.box_lower = box[0][0];
       mesh.box_upper = box[0][1];
     }
@@ -529,7 +537,8 @@ namespace PolyFrac
       {
         AssertThrow(!mesh.file_name.empty(),
                     ExcMessage(where + ": <Source = gmsh> needs <File name>."));
-        if (mesh.file_name[0] != '/' && file_name.find('/') != std::string::npos)
+        if (mesh.file_name[0] != '/' &&
+            file_name.find('/') != std::string::npos)
           mesh.file_name =
             file_name.substr(0, file_name.rfind('/') + 1) + mesh.file_name;
         AssertThrow(std::ifstream(mesh.file_name).good(),
@@ -613,17 +622,19 @@ namespace PolyFrac
 
     prm->enter_subsection("Contact");
     const std::string cwhere = "In <" + file_name + ">, subsection <Contact>";
-    contact.friction_law         = prm->get("Friction law");
+    contact.friction_law     = prm->get("Friction law");
     contact.friction_coefficient = prm->get_double("Friction coefficient");
     AssertThrow(contact.friction_coefficient >= 0,
-                ExcMessage(cwhere + ": <Friction coefficient> must be >= 0, "
-                                    "not " +
+                ExcMessage(cwhere +
+                           ": <Friction coefficient> must be >= 0, "
+                           "not " +
                            prm->get("Friction coefficient") + "."));
     contact.tresca_threshold = prm->get("Tresca threshold");
     contact.bubbles          = prm->get_bool("Bubbles");
     {
-      const std::string beta = Utilities::trim(prm->get("Complementarity parameter"));
-      contact.beta           = 0;
+      const std::string beta =
+        Utilities::trim(prm->get("Complementarity parameter"));
+      contact.beta = 0;
       if (beta != "auto")
         {
           try
@@ -683,8 +694,9 @@ namespace PolyFrac
       prm->enter_subsection(subsection);
       defaults.enter_subsection(subsection);
       if (prm->get(entry) != defaults.get(entry))
-        warnings.push_back(subsection + "/" + entry + " is not used by Model = " +
-                           model + " and is ignored");
+        warnings.push_back(subsection + "/" + entry +
+                           " is not used by Model = " + model +
+                           " and is ignored");
       prm->leave_subsection();
       defaults.leave_subsection();
     };

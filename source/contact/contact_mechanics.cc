@@ -71,8 +71,9 @@ namespace PolyFrac
           dirichlet[dofs.bubble_dof(i, d)] = 0.;
 
     // The pattern of the whole saddle-point system (u, λ).
-    const types::global_dof_index n = dofs.n_displacement_dofs() + dim * n_faces;
-    DynamicSparsityPattern        dsp(n);
+    const types::global_dof_index n =
+      dofs.n_displacement_dofs() + dim * n_faces;
+    DynamicSparsityPattern dsp(n);
     for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
       {
         const auto local = dofs.cell_dofs(c);
@@ -128,10 +129,10 @@ namespace PolyFrac
       }
     else
       {
-        const auto &ff = network.fracture_faces[i];
-        Tensor<1, 3> t = network.fractures.empty() ?
-                           Tensor<1, 3>() :
-                           network.fractures[ff.fracture].tangents[0];
+        const auto  &ff = network.fracture_faces[i];
+        Tensor<1, 3> t  = network.fractures.empty() ?
+                            Tensor<1, 3>() :
+                            network.fractures[ff.fracture].tangents[0];
         if (t.norm() < 0.5)
           {
             // Tagged fractures: any unit vector orthogonal to n.
@@ -193,25 +194,26 @@ namespace PolyFrac
     double complementarity = 0, measure = 0, stress_scale = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
       {
-        const double         area = geometry.faces[network.fracture_faces[i].face].measure;
-        const Tensor<2, dim> Q    = frame(i);
+        const double area =
+          geometry.faces[network.fracture_faces[i].face].measure;
+        const Tensor<2, dim> Q      = frame(i);
         const Tensor<1, dim> lambda = Q * face_multiplier(x, i);
         const Tensor<1, dim> j      = Q * face_jump(x, i);
-        const Tensor<1, dim> j_old =
-          friction_law == "Coulomb" ? Q * face_jump(previous_step, i) :
-                                      Tensor<1, dim>();
-        const double b = beta[i];
+        const Tensor<1, dim> j_old  = friction_law == "Coulomb" ?
+                                        Q * face_jump(previous_step, i) :
+                                        Tensor<1, dim>();
+        const double         b      = beta[i];
 
         // b_n, b_τ and the threshold g of §6.
         const double   b_n = lambda[0] + b * j[0];
         Tensor<1, dim> b_t;
         for (unsigned int d = 1; d < dim; ++d)
           b_t[d] = lambda[d] + b * (j[d] - j_old[d]);
-        const double b_t_norm = b_t.norm();
+        const double b_t_norm   = b_t.norm();
         const bool   in_contact = b_n > 0;
-        const double g = friction_law == "Coulomb" ?
-                           friction_coefficient * std::max(b_n, 0.) :
-                           threshold[i];
+        const double g          = friction_law == "Coulomb" ?
+                                    friction_coefficient * std::max(b_n, 0.) :
+                                    threshold[i];
 
         // Local residual R = λ − (projections) and its generalised
         // derivatives M_λ = ∂R/∂λ, M_j = ∂R/∂[[u]] (local components).
@@ -220,8 +222,8 @@ namespace PolyFrac
         R.normal[i] = in_contact ? NormalState::contact : NormalState::open;
         if (in_contact)
           {
-            r_local[0]     = lambda[0] - b_n;
-            M_jump[0][0]   = -b;
+            r_local[0]   = lambda[0] - b_n;
+            M_jump[0][0] = -b;
           }
         else
           {
@@ -275,7 +277,8 @@ namespace PolyFrac
 
         complementarity += area * r_local.norm_square();
         measure += area;
-        stress_scale = std::max({stress_scale, lambda.norm(), std::abs(b_n), b_t_norm});
+        stress_scale =
+          std::max({stress_scale, lambda.norm(), std::abs(b_n), b_t_norm});
 
         // Momentum: Σ |σ| λ_σ·[[v]]_σ. Complementarity rows: −|σ|/β Q^T R.
         const Tensor<1, dim> lambda_global = transpose(Q) * lambda;
@@ -299,7 +302,9 @@ namespace PolyFrac
             for (const auto &[block, w] : jumps[i])
               for (unsigned int d = 0; d < dim; ++d)
                 {
-                  jacobian->add(dim * block + d, dofs.multiplier_dof(i, d), area * w);
+                  jacobian->add(dim * block + d,
+                                dofs.multiplier_dof(i, d),
+                                area * w);
                   for (unsigned int e = 0; e < dim; ++e)
                     jacobian->add(dofs.multiplier_dof(i, d),
                                   dim * block + e,
@@ -314,8 +319,10 @@ namespace PolyFrac
         R.vector(dof) = 0;
         if (jacobian)
           {
-            const double diagonal = std::max(std::abs(stiffness.diag_element(dof)), 1e-300);
-            for (auto entry = jacobian->begin(dof); entry != jacobian->end(dof); ++entry)
+            const double diagonal =
+              std::max(std::abs(stiffness.diag_element(dof)), 1e-300);
+            for (auto entry = jacobian->begin(dof); entry != jacobian->end(dof);
+                 ++entry)
               entry->value() = 0;
             jacobian->set(dof, dof, diagonal);
           }
@@ -326,7 +333,8 @@ namespace PolyFrac
       for (unsigned int d = 0; d < dim; ++d)
         momentum(dofs.multiplier_dof(i, d)) = 0;
     const double load_scale = load * load_norm;
-    R.momentum        = load_scale > 0 ? momentum.l2_norm() / load_scale : momentum.l2_norm();
+    R.momentum =
+      load_scale > 0 ? momentum.l2_norm() / load_scale : momentum.l2_norm();
     R.complementarity = stress_scale > 0 ?
                           std::sqrt(complementarity / measure) / stress_scale :
                           std::sqrt(complementarity);
@@ -347,9 +355,9 @@ namespace PolyFrac
     SparseMatrix<double>       jacobian(sparsity);
     std::set<std::vector<int>> seen_states;
     std::vector<int>           last_states;
-    double                     best_merit     = std::numeric_limits<double>::max();
+    double                     best_merit = std::numeric_limits<double>::max();
     unsigned int               best_iteration = 0;
-    const auto                 merit = [](const Residual &R) {
+    const auto                 merit          = [](const Residual &R) {
       return R.momentum * R.momentum + R.complementarity * R.complementarity;
     };
 
@@ -382,8 +390,9 @@ namespace PolyFrac
         // best residual for 4 iterations). The contact conditions hold for
         // every β > 0, so first make β smaller, which weakens the coupling
         // of the states to the jump (up to three times); then damp.
-        const bool cycling = !seen_states.insert(states).second && states != last_states;
-        last_states        = states;
+        const bool cycling =
+          !seen_states.insert(states).second && states != last_states;
+        last_states = states;
         if (merit(R) < best_merit)
           {
             best_merit     = merit(R);
@@ -405,7 +414,22 @@ namespace PolyFrac
         Vector<double> step(x.size()), rhs(R.vector);
         rhs *= -1.;
         SparseDirectUMFPACK direct;
-        direct.initialize(jacobian);
+        try
+          {
+            direct.initialize(jacobian);
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "The Newton Jacobian of the contact problem is "
+                          "singular (UMFPACK) at iteration " +
+                          std::to_string(it) +
+                          ": with every face in contact and no bubbles "
+                          "(Contact/Bubbles = false), some multiplier "
+                          "patterns are invisible to the discrete jumps. "
+                          "Use Bubbles = true."));
+          }
         direct.vmult(step, rhs);
 
         double alpha = 1;
@@ -448,9 +472,14 @@ namespace PolyFrac
               out << " Load step to " << load << std::endl;
             if (newton(load, x, out))
               {
-                solution      = x;
-                previous_step = x;
-                reached       = load;
+                // The states of the converged step, with the slip
+                // increment from the previous step (Coulomb).
+                const Residual R = residual(x, load, nullptr);
+                normal_state     = R.normal;
+                tangential_state = R.tangential;
+                solution         = x;
+                previous_step    = x;
+                reached          = load;
               }
             else
               {
@@ -472,14 +501,11 @@ namespace PolyFrac
                               "a different Contact/Complementarity "
                               "parameter or a larger Nonlinear "
                               "solver/Maximum iterations."));
-                out << "  Newton did not converge: cutting the load step" << std::endl;
+                out << "  Newton did not converge: cutting the load step"
+                    << std::endl;
               }
           }
       }
-
-    const Residual R = residual(solution, 1., nullptr);
-    normal_state     = R.normal;
-    tangential_state = R.tangential;
 
     Vector<double> u(dofs.n_displacement_dofs());
     for (unsigned int k = 0; k < u.size(); ++k)

@@ -83,10 +83,9 @@ namespace PolyFrac
         std::vector<FanPiece<dim>> pieces(n);
         for (unsigned int i = 0; i < n; ++i)
           {
-            pieces[i].area =
-              sign * triangle_area(vertices[loop[i]],
-                                   vertices[loop[(i + 1) % n]],
-                                   center);
+            pieces[i].area = sign * triangle_area(vertices[loop[i]],
+                                                  vertices[loop[(i + 1) % n]],
+                                                  center);
             pieces[i].weights.assign(n, 1. / (3. * n));
             pieces[i].weights[i] += 1. / 3.;
             pieces[i].weights[(i + 1) % n] += 1. / 3.;
@@ -108,8 +107,8 @@ namespace PolyFrac
       {
         const std::vector<unsigned int> &loop = mesh.faces[f].vertices;
         FaceGeometry<dim>               &geo  = faces[f];
-        geo.vector_area = face_vector_area(x, loop);
-        geo.measure     = geo.vector_area.norm();
+        geo.vector_area                       = face_vector_area(x, loop);
+        geo.measure                           = geo.vector_area.norm();
         AssertThrow(geo.measure > 0,
                     ExcMessage("A face of the mesh has zero measure."));
         geo.normal   = geo.vector_area / geo.measure;
@@ -131,12 +130,12 @@ namespace PolyFrac
 
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        const auto         &cell = mesh.cells[c];
-        CellGeometry<dim>  &geo  = cells[c];
-        const unsigned int  n_K  = cell.vertices.size();
-        geo.vertex_average       = loop_average(x, cell.vertices);
-        geo.diameter             = diameter_of(x, cell.vertices);
-        geo.measure              = 0;
+        const auto        &cell = mesh.cells[c];
+        CellGeometry<dim> &geo  = cells[c];
+        const unsigned int n_K  = cell.vertices.size();
+        geo.vertex_average      = loop_average(x, cell.vertices);
+        geo.diameter            = diameter_of(x, cell.vertices);
+        geo.measure             = 0;
         geo.weights.assign(n_K, 0.);
         geo.gradients.assign(n_K, Tensor<1, dim>());
         for (const unsigned int f : cell.faces)

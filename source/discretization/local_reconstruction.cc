@@ -59,7 +59,8 @@ namespace PolyFrac
   FullMatrix<double>
   LocalReconstruction<dim>::stabilisation() const
   {
-    // D_{s,t} = δ_st − (ω_t + G_t·(x_s − x̄_K)): v_s − Π^K v(x_s) = Σ_t D_st v_t.
+    // D_{s,t} = δ_st − (ω_t + G_t·(x_s − x̄_K)): v_s − Π^K v(x_s) = Σ_t D_st
+    // v_t.
     FullMatrix<double> D(n_nodes, n_local());
     for (unsigned int s = 0; s < n_nodes; ++s)
       for (unsigned int t = 0; t < n_local(); ++t)
@@ -98,7 +99,7 @@ namespace PolyFrac
        const FractureNetwork<dim> &network,
        const unsigned int          i)
   {
-    const auto &ff     = network.fracture_faces[i];
+    const auto       &ff     = network.fracture_faces[i];
     BlockCoefficients result = face_mean(geometry, dofs, ff.plus_cell, ff.face);
     for (const auto &[block, w] :
          face_mean(geometry, dofs, ff.minus_cell, ff.face))

@@ -7,7 +7,7 @@
 namespace PolyFrac
 {
   template <int dim>
-  DoFMap<dim>::DoFMap(const PolytopalMesh<dim>    &mesh,
+  DoFMap<dim>::DoFMap(const PolytopalMesh<dim>   &mesh,
                       const FractureNetwork<dim> &network)
     : n_fracture_faces(network.n_fracture_faces())
     , cell_node_sides(mesh.n_cells())
@@ -52,7 +52,7 @@ namespace PolyFrac
             if (inserted)
               node_sides.push_back({v, {}});
             node_sides[it->second].cells.push_back(cells[i]);
-            const auto &list = mesh.cells[cells[i]].vertices;
+            const auto        &list = mesh.cells[cells[i]].vertices;
             const unsigned int local =
               std::lower_bound(list.begin(), list.end(), v) - list.begin();
             cell_node_sides[cells[i]][local] = it->second;

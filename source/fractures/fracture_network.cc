@@ -42,7 +42,8 @@ namespace PolyFrac
       {
         const Tensor<1, 2> ab = points[1] - points[0];
         measure               = ab.norm();
-        AssertThrow(measure > 0, ExcMessage("A fracture segment has length 0."));
+        AssertThrow(measure > 0,
+                    ExcMessage("A fracture segment has length 0."));
         tangents[0] = ab / measure;
         normal[0]   = -tangents[0][1];
         normal[1]   = tangents[0][0];
@@ -51,9 +52,9 @@ namespace PolyFrac
       {
         Tensor<1, 3> newell;
         for (unsigned int i = 0; i < points.size(); ++i)
-          newell += 0.5 * cross_product_3d(points[i] - points[0],
-                                           points[(i + 1) % points.size()] -
-                                             points[0]);
+          newell +=
+            0.5 * cross_product_3d(points[i] - points[0],
+                                   points[(i + 1) % points.size()] - points[0]);
         measure = newell.norm();
         AssertThrow(measure > 0,
                     ExcMessage("A fracture polygon has zero area: " +
@@ -125,8 +126,9 @@ namespace PolyFrac
     else
       {
         for (unsigned int i = 0; i < points.size(); ++i)
-          if (distance_to_segment(p, points[i], points[(i + 1) % points.size()]) <=
-              tol)
+          if (distance_to_segment(p,
+                                  points[i],
+                                  points[(i + 1) % points.size()]) <= tol)
             return true;
         return false;
       }
@@ -203,7 +205,8 @@ namespace PolyFrac
     const auto  &cells = geometry.mesh.faces[face].cells;
     const double side  = geometry.faces[face].normal * normal;
     AssertThrow(std::abs(side) > 0.5,
-                ExcMessage("A fracture face is not aligned with its fracture."));
+                ExcMessage(
+                  "A fracture face is not aligned with its fracture."));
     fracture_face_index[face] = fracture_faces.size();
     fracture_faces.push_back({face,
                               fracture,
@@ -226,8 +229,7 @@ namespace PolyFrac
         const double fraction = covered[i] / fractures[i].measure;
         AssertThrow(std::abs(fraction - 1) < 1e-8,
                     ExcMessage(
-                      "Fracture " + std::to_string(i) + " (" +
-                      names[i] +
+                      "Fracture " + std::to_string(i) + " (" + names[i] +
                       ") is not resolved by the mesh: its mesh faces cover " +
                       std::to_string(100 * fraction) +
                       " % of it. Choose a mesh whose faces lie on the fracture "

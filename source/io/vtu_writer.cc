@@ -38,10 +38,10 @@ namespace PolyFrac
      */
     template <int dim>
     void
-    write_geometry(std::ostream                                    &out,
-                   const std::vector<Point<dim>>                   &points,
-                   const std::vector<std::vector<unsigned int>>    &cells,
-                   const std::vector<unsigned int>                 &types)
+    write_geometry(std::ostream                                 &out,
+                   const std::vector<Point<dim>>                &points,
+                   const std::vector<std::vector<unsigned int>> &cells,
+                   const std::vector<unsigned int>              &types)
     {
       out << "<?xml version=\"1.0\"?>\n"
           << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
@@ -51,8 +51,9 @@ namespace PolyFrac
       for (const Point<dim> &p : points)
         append_vector<dim>(coordinates, p);
       write_array(out, "Points", 3, coordinates);
-      out << "</Points>\n<Cells>\n"
-          << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      out
+        << "</Points>\n<Cells>\n"
+        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
       unsigned int              offset = 0;
       std::vector<unsigned int> offsets;
       for (const auto &cell : cells)
@@ -92,7 +93,8 @@ namespace PolyFrac
         return {10, {0, 1, 2, 3}};
       if (type == ReferenceCells::Hexahedron)
         return {12, {0, 1, 3, 2, 4, 5, 7, 6}};
-      AssertThrow(false, ExcMessage("Cell type not supported by the VTU writer."));
+      AssertThrow(false,
+                  ExcMessage("Cell type not supported by the VTU writer."));
       return {};
     }
   } // namespace
@@ -111,20 +113,23 @@ namespace PolyFrac
     std::vector<Point<dim>>                points;
     std::vector<std::vector<unsigned int>> cells;
     std::vector<unsigned int>              types;
-    std::vector<double> displacement, stress, polytope;
+    std::vector<double>                    displacement, stress, polytope;
 
     // Reconstructions are per polytope: cache the last one (fine cells of
     // an agglomerate are usually consecutive).
-    unsigned int                                    cached = numbers::invalid_unsigned_int;
-    std::unique_ptr<LocalReconstruction<dim>>       local;
-    std::vector<Tensor<1, dim>>                     values;
-    Tensor<2, dim>                                  sigma;
+    unsigned int cached = numbers::invalid_unsigned_int;
+    std::unique_ptr<LocalReconstruction<dim>> local;
+    std::vector<Tensor<1, dim>>               values;
+    Tensor<2, dim>                            sigma;
     for (const auto &fine : mesh.fine_cells)
       {
         const unsigned int K = fine.polytope;
         if (K != cached)
           {
-            local  = std::make_unique<LocalReconstruction<dim>>(geometry, dofs, network, K);
+            local  = std::make_unique<LocalReconstruction<dim>>(geometry,
+                                                               dofs,
+                                                               network,
+                                                               K);
             values = elasticity.local_values(K);
             sigma  = elasticity.stress(K);
             cached = K;
@@ -133,9 +138,9 @@ namespace PolyFrac
         std::vector<unsigned int> cell;
         for (const unsigned int i : order)
           {
-            const unsigned int v = fine.vertices[i];
-            const auto &list = mesh.cells[K].vertices;
-            const auto  it   = std::lower_bound(list.begin(), list.end(), v);
+            const unsigned int v    = fine.vertices[i];
+            const auto        &list = mesh.cells[K].vertices;
+            const auto it = std::lower_bound(list.begin(), list.end(), v);
             const Tensor<1, dim> u =
               (it != list.end() && *it == v) ?
                 values[it - list.begin()] :
@@ -183,7 +188,7 @@ namespace PolyFrac
       traction_n, traction_t;
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
-        const auto &ff = network.fracture_faces[i];
+        const auto               &ff = network.fracture_faces[i];
         std::vector<unsigned int> cell;
         for (const unsigned int v : geometry.mesh.faces[ff.face].vertices)
           {

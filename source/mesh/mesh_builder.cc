@@ -16,7 +16,9 @@ namespace PolyFrac
   {
     template <int dim>
     void
-    make_box(const Parameters &prm, const unsigned int level, Triangulation<dim> &tria)
+    make_box(const Parameters   &prm,
+             const unsigned int  level,
+             Triangulation<dim> &tria)
     {
       Point<dim>                lower, upper;
       std::vector<unsigned int> subdivisions(dim);
@@ -104,7 +106,8 @@ namespace PolyFrac
         for (const unsigned int a : cell.vertices)
           for (const unsigned int b : cell.vertices)
             if (a != b)
-              h[a] = std::min(h[a], mesh.vertices[a].distance(mesh.vertices[b]));
+              h[a] =
+                std::min(h[a], mesh.vertices[a].distance(mesh.vertices[b]));
       for (const auto &face : mesh.faces)
         if (face.at_boundary())
           for (const unsigned int v : face.vertices)
@@ -125,7 +128,7 @@ namespace PolyFrac
 
       std::mt19937                           generator(prm.mesh.random_seed);
       std::uniform_real_distribution<double> uniform(-1., 1.);
-      const double                           D = prm.mesh.distortion;
+      const double                           D     = prm.mesh.distortion;
       std::vector<Point<dim>>                moved = mesh.vertices;
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
@@ -140,7 +143,8 @@ namespace PolyFrac
               // its strain is at most D.
               Tensor<1, dim> xi;
               for (unsigned int d = 0; d < dim; ++d)
-                xi[d] = (mesh.vertices[v][d] - lower[d]) / (upper[d] - lower[d]);
+                xi[d] =
+                  (mesh.vertices[v][d] - lower[d]) / (upper[d] - lower[d]);
               for (unsigned int i = 0; i < dim; ++i)
                 {
                   shift[i] = D * (upper[i] - lower[i]) / (2 * M_PI) *
@@ -155,14 +159,15 @@ namespace PolyFrac
 
           // On one fracture (not on its boundary): move within its plane.
           // On its boundary or on several fractures: stay.
-          const double tol          = 1e-10 * h[v];
-          unsigned int n_on         = 0;
-          bool         on_edge      = false;
+          const double tol     = 1e-10 * h[v];
+          unsigned int n_on    = 0;
+          bool         on_edge = false;
           for (const Fracture<dim> &fracture : fractures)
             if (fracture.distance(mesh.vertices[v]) <= tol)
               {
                 ++n_on;
-                on_edge = on_edge || fracture.on_boundary(mesh.vertices[v], tol);
+                on_edge =
+                  on_edge || fracture.on_boundary(mesh.vertices[v], tol);
                 shift -= (shift * fracture.normal) * fracture.normal;
               }
           if (n_on > 1 || on_edge)
@@ -217,8 +222,12 @@ namespace PolyFrac
             const std::vector<bool> &,
             PolytopalMesh<3> &);
     template PolytopalMesh<2>
-    agglomerate(const Parameters &, const std::vector<bool> &, const PolytopalMesh<2> &);
+    agglomerate(const Parameters &,
+                const std::vector<bool> &,
+                const PolytopalMesh<2> &);
     template PolytopalMesh<3>
-    agglomerate(const Parameters &, const std::vector<bool> &, const PolytopalMesh<3> &);
+    agglomerate(const Parameters &,
+                const std::vector<bool> &,
+                const PolytopalMesh<3> &);
   } // namespace MeshBuilder
 } // namespace PolyFrac

@@ -31,7 +31,7 @@ namespace PolyFrac
       const unsigned int midpoint = first->vertex_index(0) == from ?
                                       first->vertex_index(1) :
                                       first->vertex_index(0);
-      result = line_interior(first, from);
+      result                      = line_interior(first, from);
       result.push_back(midpoint);
       const std::vector<unsigned int> rest = line_interior(second, midpoint);
       result.insert(result.end(), rest.begin(), rest.end());
@@ -84,7 +84,8 @@ namespace PolyFrac
     /** The active face objects covering face @p f of @p cell. */
     template <typename FaceIterator>
     void
-    collect_active_faces(const FaceIterator &face, std::vector<FaceIterator> &out)
+    collect_active_faces(const FaceIterator        &face,
+                         std::vector<FaceIterator> &out)
     {
       if (face->has_children())
         for (unsigned int c = 0; c < face->n_children(); ++c)
@@ -109,7 +110,7 @@ namespace PolyFrac
     std::map<unsigned int, unsigned int> face_of_object;
     for (const auto &cell : tria.active_cell_iterators())
       {
-        const unsigned int c = cell->active_cell_index();
+        const unsigned int c    = cell->active_cell_index();
         FineCell          &fine = mesh.fine_cells[c];
         fine.type               = cell->reference_cell();
         fine.polytope           = c;
@@ -189,7 +190,8 @@ namespace PolyFrac
             root[find(faces[f].cells[0])] = find(faces[f].cells[1]);
         changed = false;
         for (unsigned int f = 0; f < n_faces(); ++f)
-          if (keep_face[f] && find(faces[f].cells[0]) == find(faces[f].cells[1]))
+          if (keep_face[f] &&
+              find(faces[f].cells[0]) == find(faces[f].cells[1]))
             {
               part[faces[f].cells[1]] = next_part++;
               changed                 = true;

@@ -51,8 +51,8 @@ namespace PolyFrac
       for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
         {
           const auto row = [&](const unsigned int c) {
-            const int local = map.LID(
-              static_cast<TrilinosWrappers::types::int_type>(
+            const int local =
+              map.LID(static_cast<TrilinosWrappers::types::int_type>(
                 dofs.node_side_dof(n, c)));
             Assert(local >= 0, ExcInternalError());
             return local;
@@ -60,9 +60,8 @@ namespace PolyFrac
           for (unsigned int c = 0; c < dim; ++c)
             (*modes)[c][row(c)] = 1.;
 
-          const Tensor<1, dim> x =
-            vertices[dofs.node_sides[n].vertex] - origin;
-          unsigned int mode = dim;
+          const Tensor<1, dim> x = vertices[dofs.node_sides[n].vertex] - origin;
+          unsigned int         mode = dim;
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = i + 1; j < dim; ++j, ++mode)
               {
@@ -113,14 +112,14 @@ namespace PolyFrac
   void
   Elasticity<dim>::make_constraints()
   {
-    const auto &mesh = geometry.mesh;
-    const auto &ids  = prm.boundary;
+    const auto &mesh         = geometry.mesh;
+    const auto &ids          = prm.boundary;
     const auto  is_dirichlet = [&ids](const types::boundary_id id) {
       const auto listed = [id](const std::vector<unsigned> &list) {
         return std::find(list.begin(), list.end(), id) != list.end();
       };
       return ids.dirichlet_ids.empty() ? !listed(ids.neumann_ids) :
-                                         listed(ids.dirichlet_ids);
+                                          listed(ids.dirichlet_ids);
     };
 
     constraints.clear();
@@ -128,7 +127,7 @@ namespace PolyFrac
     for (const auto &face : mesh.faces)
       if (face.at_boundary() && is_dirichlet(face.boundary_id))
         {
-          has_dirichlet_face = true;
+          has_dirichlet_face   = true;
           const unsigned int c = face.cells[0];
           for (const unsigned int v : face.vertices)
             {
@@ -163,9 +162,9 @@ namespace PolyFrac
   FullMatrix<double>
   Elasticity<dim>::local_stiffness(const LocalReconstruction<dim> &local) const
   {
-    const double       mu = prm.lame_mu, lambda = prm.lame_lambda;
-    const unsigned int n = local.n_local();
-    const auto        &G = local.gradient_coefficients;
+    const double             mu = prm.lame_mu, lambda = prm.lame_lambda;
+    const unsigned int       n = local.n_local();
+    const auto              &G = local.gradient_coefficients;
     const FullMatrix<double> S = local.stabilisation();
     FullMatrix<double>       A(dim * n, dim * n);
     // For u = e_i G_t-shaped and v = e_j G_r-shaped:
@@ -177,8 +176,9 @@ namespace PolyFrac
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
               A(dim * t + i, dim * r + j) =
-                local.measure * (mu * ((i == j ? dot : 0.) + G[t][j] * G[r][i]) +
-                                 lambda * G[t][i] * G[r][j]) +
+                local.measure *
+                  (mu * ((i == j ? dot : 0.) + G[t][j] * G[r][i]) +
+                   lambda * G[t][i] * G[r][j]) +
                 (i == j ? (2 * mu + lambda) * S(t, r) : 0.);
         }
     return A;
@@ -191,7 +191,7 @@ namespace PolyFrac
   Elasticity<dim>::assemble()
   {
     make_constraints();
-    const auto &mesh = geometry.mesh;
+    const auto                   &mesh   = geometry.mesh;
     const types::global_dof_index n_dofs = dofs.n_displacement_dofs();
 
     rhs.reinit(n_dofs);
@@ -237,15 +237,16 @@ namespace PolyFrac
 
   template <int dim>
   void
-  Elasticity<dim>::assemble_face_loads(const AffineConstraints<double> &c,
-                                       Vector<double>                  &system_rhs,
-                                       const bool with_prescribed_traction) const
+  Elasticity<dim>::assemble_face_loads(
+    const AffineConstraints<double> &c,
+    Vector<double>                  &system_rhs,
+    const bool                       with_prescribed_traction) const
   {
     const auto &mesh = geometry.mesh;
     // Face loads: Neumann traction on the boundary, prescribed pressure and
     // multiplier on the fractures. Both are Σ |σ| load · (coefficients).
     const auto add_face_load = [&](const BlockCoefficients &coefficients,
-                                   const Tensor<1, dim>     &load) {
+                                   const Tensor<1, dim>    &load) {
       std::vector<types::global_dof_index> face_dofs;
       Vector<double>                       b(dim * coefficients.size());
       for (unsigned int k = 0; k < coefficients.size(); ++k)
@@ -260,24 +261,28 @@ namespace PolyFrac
     const auto &neumann_ids = prm.boundary.neumann_ids;
     for (unsigned int f = 0; f < mesh.n_faces(); ++f)
       if (mesh.faces[f].at_boundary() &&
-          std::find(neumann_ids.begin(), neumann_ids.end(), mesh.faces[f].boundary_id) !=
-            neumann_ids.end())
+          std::find(neumann_ids.begin(),
+                    neumann_ids.end(),
+                    mesh.faces[f].boundary_id) != neumann_ids.end())
         {
           Vector<double> g(dim);
           neumann->vector_value(geometry.faces[f].centroid, g);
           Tensor<1, dim> load;
           for (unsigned int d = 0; d < dim; ++d)
             load[d] = geometry.faces[f].measure * g(d);
-          add_face_load(face_mean(geometry, dofs, mesh.faces[f].cells[0], f), load);
+          add_face_load(face_mean(geometry, dofs, mesh.faces[f].cells[0], f),
+                        load);
         }
 
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
-        const unsigned int f = network.fracture_faces[i].face;
+        const unsigned int   f = network.fracture_faces[i].face;
         const Tensor<1, dim> load =
           -geometry.faces[f].measure *
-          ((with_prescribed_traction ? fracture_traction(i) : Tensor<1, dim>()) +
-           fracture_pressure->value(geometry.faces[f].centroid) * network.normal(i));
+          ((with_prescribed_traction ? fracture_traction(i) :
+                                       Tensor<1, dim>()) +
+           fracture_pressure->value(geometry.faces[f].centroid) *
+             network.normal(i));
         add_face_load(jump(geometry, dofs, network, i), load);
       }
   }
@@ -288,8 +293,8 @@ namespace PolyFrac
   template <typename MatrixType>
   void
   Elasticity<dim>::assemble_cells(const AffineConstraints<double> &c,
-                                  MatrixType                      &system_matrix,
-                                  Vector<double>                  &system_rhs) const
+                                  MatrixType     &system_matrix,
+                                  Vector<double> &system_rhs) const
   {
     Vector<double> f(dim);
     for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
@@ -302,7 +307,8 @@ namespace PolyFrac
             body_force->vector_value(q.point, f);
             for (unsigned int t = 0; t < local.n_local(); ++t)
               {
-                const double phi = q.weight * local.potential_coefficient(t, q.point);
+                const double phi =
+                  q.weight * local.potential_coefficient(t, q.point);
                 for (unsigned int d = 0; d < dim; ++d)
                   b(dim * t + d) += f(d) * phi;
               }
@@ -321,8 +327,8 @@ namespace PolyFrac
     if (!multipliers.empty())
       return multipliers[i];
     Vector<double> value(dim);
-    traction->vector_value(geometry.faces[network.fracture_faces[i].face].centroid,
-                           value);
+    traction->vector_value(
+      geometry.faces[network.fracture_faces[i].face].centroid, value);
     Tensor<1, dim> result;
     for (unsigned int d = 0; d < dim; ++d)
       result[d] = value(d);
@@ -393,7 +399,7 @@ namespace PolyFrac
 
     TrilinosWrappers::PreconditionAMG amg;
     amg.initialize(trilinos_matrix, parameters);
-    SolverControl control(prm.solver.max_iterations,
+    SolverControl            control(prm.solver.max_iterations,
                           prm.solver.tolerance * rhs.l2_norm());
     SolverCG<Vector<double>> cg(control);
     try
@@ -448,8 +454,8 @@ namespace PolyFrac
   Elasticity<dim>::stress(const unsigned int c) const
   {
     const LocalReconstruction<dim> local(geometry, dofs, network, c);
-    const Tensor<2, dim> grad = local.gradient(local_values(c));
-    const Tensor<2, dim> strain = 0.5 * (grad + transpose(grad));
+    const Tensor<2, dim>           grad   = local.gradient(local_values(c));
+    const Tensor<2, dim>           strain = 0.5 * (grad + transpose(grad));
     return 2 * prm.lame_mu * strain +
            prm.lame_lambda * trace(grad) * unit_symmetric_tensor<dim>();
   }

@@ -31,14 +31,14 @@ namespace PolyFrac
                                                 prm.exact.displacement,
                                                 dim,
                                                 prm.constants);
-        double         e_u = 0, n_u = 0, e_grad = 0, n_grad = 0;
-        Vector<double> u(dim);
+        double     e_u = 0, n_u = 0, e_grad = 0, n_grad = 0;
+        Vector<double>              u(dim);
         std::vector<Tensor<1, dim>> grad_u(dim);
         for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
           {
             const LocalReconstruction<dim> local(geometry, dofs, network, c);
-            const auto values = elasticity.local_values(c);
-            const Tensor<2, dim> grad_h = local.gradient(values);
+            const auto                     values = elasticity.local_values(c);
+            const Tensor<2, dim>           grad_h = local.gradient(values);
             for (const auto &q : geometry.quadrature(c))
               {
                 exact->vector_value(q.point, u);
@@ -58,10 +58,11 @@ namespace PolyFrac
       }
     if (!prm.exact.displacement_jump.empty())
       {
-        const auto exact = make_expression<dim>("Exact solution/Displacement jump",
-                                                prm.exact.displacement_jump,
-                                                dim,
-                                                prm.constants);
+        const auto exact =
+          make_expression<dim>("Exact solution/Displacement jump",
+                               prm.exact.displacement_jump,
+                               dim,
+                               prm.constants);
         double         e = 0, n = 0;
         Vector<double> value(dim);
         for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
@@ -79,10 +80,11 @@ namespace PolyFrac
       }
     if (!prm.exact.contact_traction.empty())
       {
-        const auto exact = make_expression<dim>("Exact solution/Contact traction",
-                                                prm.exact.contact_traction,
-                                                dim,
-                                                prm.constants);
+        const auto exact =
+          make_expression<dim>("Exact solution/Contact traction",
+                               prm.exact.contact_traction,
+                               dim,
+                               prm.constants);
         // err_lambda_hm12 weighs each face by h_σ and divides by diam(Ω):
         // a computable surrogate of the H^{-1/2}(Γ) error.
         Point<dim> lower = geometry.mesh.vertices[0], upper = lower;
@@ -99,7 +101,7 @@ namespace PolyFrac
           {
             const auto &face = geometry.faces[network.fracture_faces[i].face];
             exact->vector_value(face.centroid, value);
-            const Tensor<1, dim> lambda_h = elasticity.fracture_traction(i);
+            const Tensor<1, dim> lambda_h   = elasticity.fracture_traction(i);
             double               difference = 0;
             for (unsigned int d = 0; d < dim; ++d)
               {

@@ -19,7 +19,9 @@
 using namespace PolyFrac;
 
 void
-check(const std::string &name, const std::string &content, const bool write = true)
+check(const std::string &name,
+      const std::string &content,
+      const bool         write = true)
 {
   const std::string file = name + ".prm";
   if (write)
@@ -38,7 +40,10 @@ check(const std::string &name, const std::string &content, const bool write = tr
         ContactMechanics<2>(prm, *level.geometry, *level.network, *level.dofs);
       else
         {
-          Elasticity<2> elasticity(prm, *level.geometry, *level.network, *level.dofs);
+          Elasticity<2> elasticity(prm,
+                                   *level.geometry,
+                                   *level.network,
+                                   *level.dofs);
           elasticity.assemble();
         }
       std::cout << "no error" << std::endl;
@@ -62,32 +67,42 @@ main(int argc, char **argv)
   check("bad_expression",
         "subsection Body force\n  set Function expression = foo(x); 0\nend\n");
   check("bad_dimension", "set Dimension = 4\n");
-  check("missing_mesh",
-        "subsection Mesh\n  set Source = gmsh\n  set File name = missing.msh\nend\n");
+  check(
+    "missing_mesh",
+    "subsection Mesh\n  set Source = gmsh\n  set File name = missing.msh\nend\n");
   check("unresolved_fracture",
         "subsection Fractures\n  set Segments = 0.1, -1 : 0.1, 1\nend\n");
   check("partly_resolved_fracture",
         "subsection Fractures\n  set Segments = 0, -0.6 : 0, 0.5\nend\n");
-  check("no_dirichlet",
-        "subsection Boundary conditions\n  set Neumann boundary ids = 0, 1, 2, 3\nend\n");
+  check(
+    "no_dirichlet",
+    "subsection Boundary conditions\n  set Neumann boundary ids = 0, 1, 2, 3\nend\n");
   check("unavailable_model",
         "subsection Model\n  set Model = poromechanics\nend\n");
-  check("bad_fracture", "subsection Fractures\n  set Segments = 0, 0 : 1, 1 : 2, 2\nend\n");
+  check("bad_fracture",
+        "subsection Fractures\n  set Segments = 0, 0 : 1, 1 : 2, 2\nend\n");
   check("missing_file_itself", "", false);
 
   // Contact mechanics.
-  const std::string contact = "subsection Model\n  set Model = contact mechanics\nend\n";
-  const std::string fracture = "subsection Fractures\n  set Segments = 0, -1 : 0, 1\nend\n";
+  const std::string contact =
+    "subsection Model\n  set Model = contact mechanics\nend\n";
+  const std::string fracture =
+    "subsection Fractures\n  set Segments = 0, -1 : 0, 1\nend\n";
   check("contact_without_fracture", contact);
   check("negative_friction",
-        contact + fracture + "subsection Contact\n  set Friction coefficient = -0.5\nend\n");
-  check("negative_threshold",
         contact + fracture +
-          "subsection Contact\n  set Friction law = Tresca\n  set Tresca threshold = y\nend\n");
+          "subsection Contact\n  set Friction coefficient = -0.5\nend\n");
+  check(
+    "negative_threshold",
+    contact + fracture +
+      "subsection Contact\n  set Friction law = Tresca\n  set Tresca threshold = y\nend\n");
   check("zero_beta",
-        contact + fracture + "subsection Contact\n  set Complementarity parameter = 0\nend\n");
+        contact + fracture +
+          "subsection Contact\n  set Complementarity parameter = 0\nend\n");
   check("bad_beta",
-        contact + fracture + "subsection Contact\n  set Complementarity parameter = large\nend\n");
+        contact + fracture +
+          "subsection Contact\n  set Complementarity parameter = large\nend\n");
   check("unresolved_fracture_contact",
-        contact + "subsection Fractures\n  set Segments = 0.1, -1 : 0.1, 1\nend\n");
+        contact +
+          "subsection Fractures\n  set Segments = 0.1, -1 : 0.1, 1\nend\n");
 }

@@ -64,20 +64,25 @@ check(const std::string &name, const std::function<void(Parameters &)> &setup)
     prm.fractures.geometries = {{Point<3>(-1, 0, 0), Point<3>(1, 0, 0)},
                                 {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
   else
-    prm.fractures.geometries = {
-      {Point<3>(0, -1, -1), Point<3>(0, 1, -1), Point<3>(0, 1, 1), Point<3>(0, -1, 1)},
-      {Point<3>(-1, 0, -1), Point<3>(1, 0, -1), Point<3>(1, 0, 1), Point<3>(-1, 0, 1)}};
+    prm.fractures.geometries = {{Point<3>(0, -1, -1),
+                                 Point<3>(0, 1, -1),
+                                 Point<3>(0, 1, 1),
+                                 Point<3>(0, -1, 1)},
+                                {Point<3>(-1, 0, -1),
+                                 Point<3>(1, 0, -1),
+                                 Point<3>(1, 0, 1),
+                                 Point<3>(-1, 0, 1)}};
   setup(prm);
   const LevelDiscretization<dim> level(prm, 0);
-  const auto &geometry = *level.geometry;
-  const auto &network  = *level.network;
-  const auto &dofs     = *level.dofs;
-  const auto &mesh     = *level.mesh;
-  const PiecewiseAffine<dim> field;
+  const auto                    &geometry = *level.geometry;
+  const auto                    &network  = *level.network;
+  const auto                    &dofs     = *level.dofs;
+  const auto                    &mesh     = *level.mesh;
+  const PiecewiseAffine<dim>     field;
 
   double gradient_error = 0, potential_error = 0, sum_g = 0, measure = 0,
          simplex_stabilisation = 0;
-  unsigned int n_simplices = 0;
+  unsigned int n_simplices     = 0;
   for (unsigned int c = 0; c < mesh.n_cells(); ++c)
     {
       const LocalReconstruction<dim> local(geometry, dofs, network, c);
@@ -89,10 +94,10 @@ check(const std::string &name, const std::function<void(Parameters &)> &setup)
         std::max(gradient_error,
                  (local.gradient(values) - field.gradient(region)).norm());
       for (const auto &q : geometry.quadrature(c))
-        potential_error =
-          std::max(potential_error,
-                   (local.potential(values, q.point) - field.value(q.point, region))
-                     .norm());
+        potential_error = std::max(potential_error,
+                                   (local.potential(values, q.point) -
+                                    field.value(q.point, region))
+                                     .norm());
       Tensor<1, dim> g;
       for (unsigned int s = 0; s < local.n_nodes; ++s)
         g += local.gradient_coefficients[s];
@@ -104,20 +109,22 @@ check(const std::string &name, const std::function<void(Parameters &)> &setup)
           const FullMatrix<double> S = local.stabilisation();
           for (unsigned int s = 0; s < local.n_nodes; ++s)
             for (unsigned int t = 0; t < local.n_nodes; ++t)
-              simplex_stabilisation = std::max(simplex_stabilisation, std::abs(S(s, t)));
+              simplex_stabilisation =
+                std::max(simplex_stabilisation, std::abs(S(s, t)));
         }
     }
 
   // Node-side values from the region of the side's first cell.
   std::vector<Tensor<1, dim>> blocks(dofs.n_node_sides() + dofs.n_bubbles());
   for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
-    blocks[n] = field.value(mesh.vertices[dofs.node_sides[n].vertex],
-                            geometry.cells[dofs.node_sides[n].cells[0]].centroid);
+    blocks[n] =
+      field.value(mesh.vertices[dofs.node_sides[n].vertex],
+                  geometry.cells[dofs.node_sides[n].cells[0]].centroid);
   double jump_error = 0;
   for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
     {
-      const auto &ff = network.fracture_faces[i];
-      const Point<dim> x = geometry.faces[ff.face].centroid;
+      const auto          &ff = network.fracture_faces[i];
+      const Point<dim>     x  = geometry.faces[ff.face].centroid;
       const Tensor<1, dim> exact =
         field.value(x, geometry.cells[ff.plus_cell].centroid) -
         field.value(x, geometry.cells[ff.minus_cell].centroid);
@@ -131,7 +138,8 @@ check(const std::string &name, const std::function<void(Parameters &)> &setup)
             << network.n_fracture_faces() << " fracture faces" << std::endl
             << "  |grad^K u - grad u|: " << Testing::round_off(gradient_error)
             << "; |Pi^K u - u|: " << Testing::round_off(potential_error)
-            << "; |[[u]] - [u]|: " << Testing::round_off(jump_error) << std::endl
+            << "; |[[u]] - [u]|: " << Testing::round_off(jump_error)
+            << std::endl
             << "  h|sum_s g_s|: " << Testing::round_off(sum_g)
             << "; sum |K| - |Omega|: "
             << Testing::round_off(measure - std::pow(2., dim))
@@ -149,7 +157,8 @@ check_all()
 {
   check<dim>("hypercubes", [](Parameters &) {});
   check<dim>("simplices", [](Parameters &p) { p.mesh.cell_type = "simplex"; });
-  check<dim>("random distortion", [](Parameters &p) { p.mesh.distortion = 0.3; });
+  check<dim>("random distortion",
+             [](Parameters &p) { p.mesh.distortion = 0.3; });
   check<dim>("smooth distortion", [](Parameters &p) {
     p.mesh.distortion      = 0.3;
     p.mesh.distortion_type = "smooth";

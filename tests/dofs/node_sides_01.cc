@@ -9,10 +9,11 @@ using namespace PolyFrac;
 
 template <int dim>
 void
-check(const std::string &name, const std::vector<std::vector<Point<3>>> &geometries,
-      const Point<dim> &probe)
+check(const std::string                        &name,
+      const std::vector<std::vector<Point<3>>> &geometries,
+      const Point<dim>                         &probe)
 {
-  Parameters prm = Testing::default_parameters(dim, 4);
+  Parameters prm           = Testing::default_parameters(dim, 4);
   prm.fractures.geometries = geometries;
   const LevelDiscretization<dim> level(prm, 0);
   unsigned int                   at_probe = 0;
@@ -33,27 +34,57 @@ main()
   using P = Point<3>;
   // 2D, on (-1, 1)^2 with 4 x 4 cells.
   check<2>("tip", {{P(-0.5, 0, 0), P(0.5, 0, 0)}}, Point<2>(0.5, 0));
-  check<2>("inside one fracture", {{P(-0.5, 0, 0), P(0.5, 0, 0)}}, Point<2>(0, 0));
-  check<2>("reaching the boundary", {{P(-1, 0, 0), P(1, 0, 0)}}, Point<2>(1, 0));
-  check<2>("L", {{P(0, 0, 0), P(0.5, 0, 0)}, {P(0, 0, 0), P(0, 0.5, 0)}}, Point<2>(0, 0));
-  check<2>("T", {{P(-0.5, 0, 0), P(0.5, 0, 0)}, {P(0, 0, 0), P(0, 0.5, 0)}}, Point<2>(0, 0));
-  check<2>("X", {{P(-0.5, 0, 0), P(0.5, 0, 0)}, {P(0, -0.5, 0), P(0, 0.5, 0)}}, Point<2>(0, 0));
-  check<2>("X reaching the boundary", {{P(-1, 0, 0), P(1, 0, 0)}, {P(0, -1, 0), P(0, 1, 0)}},
+  check<2>("inside one fracture",
+           {{P(-0.5, 0, 0), P(0.5, 0, 0)}},
+           Point<2>(0, 0));
+  check<2>("reaching the boundary",
+           {{P(-1, 0, 0), P(1, 0, 0)}},
+           Point<2>(1, 0));
+  check<2>("L",
+           {{P(0, 0, 0), P(0.5, 0, 0)}, {P(0, 0, 0), P(0, 0.5, 0)}},
+           Point<2>(0, 0));
+  check<2>("T",
+           {{P(-0.5, 0, 0), P(0.5, 0, 0)}, {P(0, 0, 0), P(0, 0.5, 0)}},
+           Point<2>(0, 0));
+  check<2>("X",
+           {{P(-0.5, 0, 0), P(0.5, 0, 0)}, {P(0, -0.5, 0), P(0, 0.5, 0)}},
+           Point<2>(0, 0));
+  check<2>("X reaching the boundary",
+           {{P(-1, 0, 0), P(1, 0, 0)}, {P(0, -1, 0), P(0, 1, 0)}},
            Point<2>(0, 0));
   check<2>("corner on the boundary (L at the boundary)",
-           {{P(-1, 0, 0), P(0, 0, 0)}, {P(0, 0, 0), P(0, -1, 0)}}, Point<2>(0, 0));
+           {{P(-1, 0, 0), P(0, 0, 0)}, {P(0, 0, 0), P(0, -1, 0)}},
+           Point<2>(0, 0));
 
-  // 3D, on (-1, 1)^3 with 4 x 4 x 4 cells: polygons in the planes x = 0 and y = 0.
-  const std::vector<P> x_inner = {P(0, -0.5, -0.5), P(0, 0.5, -0.5), P(0, 0.5, 0.5), P(0, -0.5, 0.5)};
-  const std::vector<P> x_full  = {P(0, -1, -1), P(0, 1, -1), P(0, 1, 1), P(0, -1, 1)};
-  const std::vector<P> y_inner = {P(-0.5, 0, -0.5), P(0.5, 0, -0.5), P(0.5, 0, 0.5), P(-0.5, 0, 0.5)};
-  const std::vector<P> y_half  = {P(0, 0, -0.5), P(0.5, 0, -0.5), P(0.5, 0, 0.5), P(0, 0, 0.5)};
-  const std::vector<P> y_full  = {P(-1, 0, -1), P(1, 0, -1), P(1, 0, 1), P(-1, 0, 1)};
+  // 3D, on (-1, 1)^3 with 4 x 4 x 4 cells: polygons in the planes x = 0 and y =
+  // 0.
+  const std::vector<P> x_inner = {P(0, -0.5, -0.5),
+                                  P(0, 0.5, -0.5),
+                                  P(0, 0.5, 0.5),
+                                  P(0, -0.5, 0.5)};
+  const std::vector<P> x_full  = {P(0, -1, -1),
+                                  P(0, 1, -1),
+                                  P(0, 1, 1),
+                                  P(0, -1, 1)};
+  const std::vector<P> y_inner = {P(-0.5, 0, -0.5),
+                                  P(0.5, 0, -0.5),
+                                  P(0.5, 0, 0.5),
+                                  P(-0.5, 0, 0.5)};
+  const std::vector<P> y_half  = {P(0, 0, -0.5),
+                                  P(0.5, 0, -0.5),
+                                  P(0.5, 0, 0.5),
+                                  P(0, 0, 0.5)};
+  const std::vector<P> y_full  = {P(-1, 0, -1),
+                                  P(1, 0, -1),
+                                  P(1, 0, 1),
+                                  P(-1, 0, 1)};
   check<3>("tip edge", {x_inner}, Point<3>(0, 0.5, 0));
   check<3>("tip corner", {x_inner}, Point<3>(0, 0.5, 0.5));
   check<3>("inside one fracture", {x_inner}, Point<3>(0, 0, 0));
   check<3>("reaching the boundary", {x_full}, Point<3>(0, 1, 0));
-  check<3>("L", {{P(0, 0, -0.5), P(0, 0.5, -0.5), P(0, 0.5, 0.5), P(0, 0, 0.5)}, y_half},
+  check<3>("L",
+           {{P(0, 0, -0.5), P(0, 0.5, -0.5), P(0, 0.5, 0.5), P(0, 0, 0.5)},
+            y_half},
            Point<3>(0, 0, 0));
   check<3>("T", {x_inner, y_half}, Point<3>(0, 0, 0));
   check<3>("X", {x_inner, y_inner}, Point<3>(0, 0, 0));

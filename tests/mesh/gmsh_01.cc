@@ -42,12 +42,13 @@ namespace
     const auto                    &network  = *discretization.network;
 
     std::cout << dim << "D level " << level << std::endl;
-    std::cout << "n_cells: " << mesh.n_cells() << " (deal.II cells "
-              << discretization.triangulation.n_active_cells() << ", "
-              << (discretization.triangulation.all_reference_cells_are_simplex() ?
-                    "simplices" :
-                    "not only simplices")
-              << ")" << std::endl;
+    std::cout
+      << "n_cells: " << mesh.n_cells() << " (deal.II cells "
+      << discretization.triangulation.n_active_cells() << ", "
+      << (discretization.triangulation.all_reference_cells_are_simplex() ?
+            "simplices" :
+            "not only simplices")
+      << ")" << std::endl;
 
     std::map<unsigned int, unsigned int> boundary_faces;
     for (const auto &face : mesh.faces)
@@ -70,7 +71,7 @@ namespace
       {
         same_normal = same_normal && (ff.normal - normal).norm() < 1e-12;
         const Point<dim> &x = geometry.faces[ff.face].centroid;
-        plus_side = plus_side &&
+        plus_side           = plus_side &&
                     (geometry.cells[ff.plus_cell].centroid - x) * normal < 0 &&
                     (geometry.cells[ff.minus_cell].centroid - x) * normal > 0;
         measure += geometry.faces[ff.face].measure;

@@ -43,13 +43,13 @@ namespace PolyFrac
   /** One row of convergence.csv. */
   struct ConvergenceRow
   {
-    unsigned int level;
-    double       h;
-    unsigned int n_cells;
-    unsigned int n_dofs;
-    Errors       errors;
+    unsigned int                level;
+    double                      h;
+    unsigned int                n_cells;
+    unsigned int                n_dofs;
+    Errors                      errors;
     std::optional<unsigned int> newton_iterations;
-    double       wall_seconds;
+    double                      wall_seconds;
   };
 
   /**

@@ -126,10 +126,10 @@ namespace PolyFrac
     /** Contact (Model = contact mechanics). */
     struct ContactData
     {
-      std::string  friction_law;
-      double       friction_coefficient;
-      std::string  tresca_threshold;
-      bool         bubbles;
+      std::string friction_law;
+      double      friction_coefficient;
+      std::string tresca_threshold;
+      bool        bubbles;
       /** β > 0, or 0 for auto: (2μ + λ)/h_σ per fracture face. */
       double       beta;
       unsigned int n_load_steps;

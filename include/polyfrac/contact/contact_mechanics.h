@@ -150,9 +150,9 @@ namespace PolyFrac
     double               load_norm;
 
     Vector<double> solution, previous_step;
-    unsigned int   total_iterations  = 0;
+    unsigned int   total_iterations = 0;
     /** How often β was divided by 10 on active-set cycling. */
-    unsigned int   n_beta_reductions = 0;
+    unsigned int n_beta_reductions = 0;
   };
 } // namespace PolyFrac
 

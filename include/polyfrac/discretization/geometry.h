@@ -121,7 +121,7 @@ namespace PolyFrac
     double
     max_diameter() const;
 
-    const PolytopalMesh<dim> &mesh;
+    const PolytopalMesh<dim>      &mesh;
     std::vector<FaceGeometry<dim>> faces;
     std::vector<CellGeometry<dim>> cells;
   };

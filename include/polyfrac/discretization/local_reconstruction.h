@@ -36,10 +36,10 @@ namespace PolyFrac
   class LocalReconstruction
   {
   public:
-    LocalReconstruction(const MeshGeometry<dim> &geometry,
-                        const DoFMap<dim>       &dofs,
+    LocalReconstruction(const MeshGeometry<dim>    &geometry,
+                        const DoFMap<dim>          &dofs,
                         const FractureNetwork<dim> &network,
-                        const unsigned int       cell);
+                        const unsigned int          cell);
 
     unsigned int
     n_local() const
@@ -82,7 +82,8 @@ namespace PolyFrac
    */
   using BlockCoefficients = std::vector<std::pair<unsigned int, double>>;
 
-  /** v̄_{Kσ} = Σ_s ω_s^σ v_{Ks}: the face mean of face @p f seen from cell @p c. */
+  /** v̄_{Kσ} = Σ_s ω_s^σ v_{Ks}: the face mean of face @p f seen from cell @p c.
+   */
   template <int dim>
   BlockCoefficients
   face_mean(const MeshGeometry<dim> &geometry,

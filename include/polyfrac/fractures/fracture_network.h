@@ -42,10 +42,10 @@ namespace PolyFrac
     bool
     on_boundary(const Point<dim> &p, const double tol) const;
 
-    std::vector<Point<dim>>                points;
-    Tensor<1, dim>                         normal;
-    std::array<Tensor<1, dim>, dim - 1>    tangents;
-    double                                 measure;
+    std::vector<Point<dim>>             points;
+    Tensor<1, dim>                      normal;
+    std::array<Tensor<1, dim>, dim - 1> tangents;
+    double                              measure;
   };
 
   /**
@@ -127,8 +127,8 @@ namespace PolyFrac
     /** Geometric fractures (empty for tagged networks). */
     std::vector<Fracture<dim>> fractures;
     /** A readable name per fracture (its points, or its gmsh tag). */
-    std::vector<std::string>   names;
-    std::vector<FractureFace>  fracture_faces;
+    std::vector<std::string>  names;
+    std::vector<FractureFace> fracture_faces;
 
   private:
     void

@@ -40,7 +40,7 @@ namespace PolyFrac
                      const MeshGeometry<dim>            &geometry,
                      const FractureNetwork<dim>         &network,
                      const Elasticity<dim>              &elasticity,
-                     const std::vector<NormalState>     &normal_state = {},
+                     const std::vector<NormalState>     &normal_state     = {},
                      const std::vector<TangentialState> &tangential_state = {});
 } // namespace PolyFrac
 

@@ -32,7 +32,9 @@ namespace PolyFrac
     /** Generated box (colorized: ids 0/1 at x min/max, 2/3 y, 4/5 z). */
     template <int dim>
     void
-    make_box(const Parameters &prm, const unsigned int level, Triangulation<dim> &tria);
+    make_box(const Parameters   &prm,
+             const unsigned int  level,
+             Triangulation<dim> &tria);
 
     /** Refines the cells whose centre lies in the closed box. */
     template <int dim>

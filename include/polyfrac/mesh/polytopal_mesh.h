@@ -52,7 +52,7 @@ namespace PolyFrac
     {
       std::vector<unsigned int>   vertices;
       std::array<unsigned int, 2> cells = {{invalid, invalid}};
-      types::boundary_id          boundary_id = numbers::internal_face_boundary_id;
+      types::boundary_id boundary_id    = numbers::internal_face_boundary_id;
 
       bool
       at_boundary() const
@@ -110,7 +110,8 @@ namespace PolyFrac
       return faces[f].cells[0] == c ? 1. : -1.;
     }
 
-    /** The neighbour of cell @p c across face @p f (invalid at the boundary). */
+    /** The neighbour of cell @p c across face @p f (invalid at the boundary).
+     */
     unsigned int
     neighbor(const unsigned int c, const unsigned int f) const
     {

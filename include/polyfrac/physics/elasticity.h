@@ -55,7 +55,8 @@ namespace PolyFrac
     unsigned int
     solve();
 
-    /** Unknowns of the linear system: displacement dofs not fixed by Dirichlet data. */
+    /** Unknowns of the linear system: displacement dofs not fixed by Dirichlet
+     * data. */
     types::global_dof_index
     n_unknowns() const
     {

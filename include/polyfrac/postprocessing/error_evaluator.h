@@ -23,11 +23,12 @@ namespace PolyFrac
    * - err_u = ‖u − Π^D u_D‖ / ‖u‖ and err_grad_u = ‖∇u − ∇^D u_D‖ / ‖∇u‖,
    *   integrated on the fan sub-simplices with a degree-2 interior rule
    *   (∇u by central differences);
-   * - err_jump = (Σ_σ |σ| |[u](x̄_σ) − [[u_D]]_σ|²)^{1/2} / (Σ_σ |σ| |[u](x̄_σ)|²)^{1/2}.
-   * - err_lambda_l2 = (Σ_σ |σ| |λ(x̄_σ) − λ_σ|²)^{1/2} / (Σ_σ |σ| |λ(x̄_σ)|²)^{1/2}
-   *   and err_lambda_hm12, the same with weights h_σ over diam(Ω) (a
-   *   computable H^{-1/2}(Γ) surrogate; order = L² order + 1/2).
-   * Where a denominator is below 1e-14 the absolute error is reported.
+   * - err_jump = (Σ_σ |σ| |[u](x̄_σ) − [[u_D]]_σ|²)^{1/2} / (Σ_σ |σ|
+   * |[u](x̄_σ)|²)^{1/2}.
+   * - err_lambda_l2 = (Σ_σ |σ| |λ(x̄_σ) − λ_σ|²)^{1/2} / (Σ_σ |σ|
+   * |λ(x̄_σ)|²)^{1/2} and err_lambda_hm12, the same with weights h_σ over
+   * diam(Ω) (a computable H^{-1/2}(Γ) surrogate; order = L² order + 1/2). Where
+   * a denominator is below 1e-14 the absolute error is reported.
    */
   struct Errors
   {
