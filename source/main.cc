@@ -24,21 +24,9 @@ main(int argc, char **argv)
                                      std::cout);
           return 0;
         }
-      const bool        has_file = argc > 1 && argument != "--set";
-      const std::string file =
-        has_file ? argument :
-                   std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm";
-      std::vector<std::string> overrides;
-      for (int i = has_file ? 2 : 1; i < argc; ++i)
-        {
-          AssertThrow(std::string(argv[i]) == "--set" && i + 1 < argc,
-                      ExcMessage("Usage: polyfrac [FILE.prm] [--set "
-                                 "Subsection/Entry=value ...]"));
-          overrides.push_back(argv[++i]);
-        }
-      const unsigned int dim = Parameters::read_dimension(file);
-      Parameters         prm(dim);
-      prm.parse(file, overrides);
+      const Parameters prm = Parameters::from_command_line(
+        argc, argv, std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm");
+      const unsigned int dim = prm.dim;
       if (dim == 2)
         Simulator<2>(prm).run(std::cout);
       else

@@ -112,6 +112,7 @@
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/physics/elasticity.h>
+#include <polyfrac/postprocessing/convergence_table.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
 #include <algorithm>
@@ -479,8 +480,7 @@ namespace Step1
   void
   run(const Parameters &prm, std::ostream &out)
   {
-    std::vector<double> h;
-    std::vector<Errors> errors;
+    std::vector<ConvergenceRow> rows;
     for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
       {
         const LevelDiscretization<dim> discretization(prm, level);
@@ -509,41 +509,20 @@ namespace Step1
         else
           out << std::setprecision(3) << relative << std::endl << std::endl;
 
-        h.push_back(geometry.max_diameter());
-        errors.push_back(compute_errors(prm, geometry, network, dofs, library));
+        rows.push_back({level,
+                        geometry.max_diameter(),
+                        geometry.mesh.n_cells(),
+                        static_cast<unsigned int>(library.n_unknowns()),
+                        compute_errors(prm, geometry, network, dofs, library),
+                        {},
+                        0.});
       }
 
     // The table: the largest polytope diameter h, the errors with six
     // significant digits and the observed orders log(e_{k−1}/e_k) /
-    // log(h_{k−1}/h_k), for the errors whose exact field is given.
-    using Column = std::pair<std::string, std::optional<ErrorValue> Errors::*>;
-    const std::vector<Column> columns = {{"err_u", &Errors::u},
-                                         {"err_grad_u", &Errors::grad_u},
-                                         {"err_jump", &Errors::jump}};
-    out << "level" << std::setw(10) << "h";
-    for (const auto &[name, member] : columns)
-      if (errors[0].*member)
-        out << std::setw(13) << name << std::setw(6) << "rate";
-    out << std::endl;
-    for (unsigned int k = 0; k < h.size(); ++k)
-      {
-        out << std::setw(5) << k << std::setw(10) << std::setprecision(4)
-            << h[k];
-        for (const auto &[name, member] : columns)
-          if (errors[k].*member)
-            {
-              const double e = (errors[k].*member)->value;
-              out << std::setw(13) << std::scientific << std::setprecision(5)
-                  << e << std::fixed << std::setprecision(2) << std::setw(6);
-              if (k == 0)
-                out << "-";
-              else
-                out << std::log((errors[k - 1].*member)->value / e) /
-                         std::log(h[k - 1] / h[k]);
-              out << std::defaultfloat;
-            }
-        out << std::endl;
-      }
+    // log(h_{k−1}/h_k), for the errors whose exact field is given; the
+    // library prints it as the polyfrac program does.
+    write_convergence_table(out, rows);
   }
 } // namespace Step1
 
@@ -564,20 +543,11 @@ main(int argc, char **argv)
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const bool        has_file = argc > 1 && std::string(argv[1]) != "--set";
-      const std::string file =
-        has_file ? argv[1] : POLYFRAC_SOURCE_DIR "/prm/step-1.prm";
-      std::vector<std::string> overrides;
-      for (int i = has_file ? 2 : 1; i < argc; ++i)
-        {
-          AssertThrow(std::string(argv[i]) == "--set" && i + 1 < argc,
-                      ExcMessage("Usage: step-1 [FILE.prm] [--set "
-                                 "Subsection/Entry=value ...]"));
-          overrides.push_back(argv[++i]);
-        }
-      const unsigned int dim = Parameters::read_dimension(file);
-      Parameters         prm(dim);
-      prm.parse(file, overrides);
+      const Parameters                 prm =
+        Parameters::from_command_line(argc,
+                                      argv,
+                                      POLYFRAC_SOURCE_DIR "/prm/step-1.prm");
+      const unsigned int dim = prm.dim;
       for (const std::string &warning : prm.warnings)
         std::cout << "Warning: " << warning << std::endl;
 

@@ -252,6 +252,7 @@
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/postprocessing/convergence_table.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
 #include <algorithm>
@@ -796,8 +797,7 @@ namespace Step2
     out << (prm.contact.bubbles ? "" : ", without bubbles") << std::endl
         << std::endl;
 
-    std::vector<double> h;
-    std::vector<Errors> errors;
+    std::vector<ConvergenceRow> rows;
     for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
       {
         const LevelDiscretization<dim> discretization(prm, level);
@@ -826,48 +826,21 @@ namespace Step2
           }
         out << std::endl;
 
-        h.push_back(geometry.max_diameter());
-        errors.push_back(
-          compute_errors(prm, geometry, network, dofs, contact.displacement()));
+        rows.push_back(
+          {level,
+           geometry.max_diameter(),
+           geometry.mesh.n_cells(),
+           static_cast<unsigned int>(contact.n_unknowns()),
+           compute_errors(prm, geometry, network, dofs, contact.displacement()),
+           {},
+           0.});
       }
 
     // The table: the largest polytope diameter h, the errors with six
     // significant digits and the observed orders log(e_{k−1}/e_k) /
-    // log(h_{k−1}/h_k), for the errors whose exact field is given. An
-    // error marked "(abs)" is absolute because its exact field vanishes.
-    using Column = std::pair<std::string, std::optional<ErrorValue> Errors::*>;
-    const std::vector<Column> columns = {{"err_u", &Errors::u},
-                                         {"err_grad_u", &Errors::grad_u},
-                                         {"err_jump", &Errors::jump},
-                                         {"err_lambda_l2", &Errors::lambda_l2},
-                                         {"err_lambda_hm12",
-                                          &Errors::lambda_hm12}};
-    out << "level" << std::setw(10) << "h";
-    for (const auto &[name, member] : columns)
-      if (errors[0].*member)
-        out << std::setw(16)
-            << (name + ((errors[0].*member)->absolute ? "(abs)" : ""))
-            << std::setw(6) << "rate";
-    out << std::endl;
-    for (unsigned int k = 0; k < h.size(); ++k)
-      {
-        out << std::setw(5) << k << std::setw(10) << std::setprecision(4)
-            << h[k];
-        for (const auto &[name, member] : columns)
-          if (errors[k].*member)
-            {
-              const double e = (errors[k].*member)->value;
-              out << std::setw(16) << std::scientific << std::setprecision(5)
-                  << e << std::fixed << std::setprecision(2) << std::setw(6);
-              if (k == 0)
-                out << "-";
-              else
-                out << std::log((errors[k - 1].*member)->value / e) /
-                         std::log(h[k - 1] / h[k]);
-              out << std::defaultfloat;
-            }
-        out << std::endl;
-      }
+    // log(h_{k−1}/h_k), for the errors whose exact field is given; the
+    // library prints it as the polyfrac program does.
+    write_convergence_table(out, rows);
   }
 } // namespace Step2
 
@@ -888,20 +861,11 @@ main(int argc, char **argv)
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const bool        has_file = argc > 1 && std::string(argv[1]) != "--set";
-      const std::string file =
-        has_file ? argv[1] : POLYFRAC_SOURCE_DIR "/prm/step-2.prm";
-      std::vector<std::string> overrides;
-      for (int i = has_file ? 2 : 1; i < argc; ++i)
-        {
-          AssertThrow(std::string(argv[i]) == "--set" && i + 1 < argc,
-                      ExcMessage("Usage: step-2 [FILE.prm] [--set "
-                                 "Subsection/Entry=value ...]"));
-          overrides.push_back(argv[++i]);
-        }
-      const unsigned int dim = Parameters::read_dimension(file);
-      Parameters         prm(dim);
-      prm.parse(file, overrides);
+      const Parameters                 prm =
+        Parameters::from_command_line(argc,
+                                      argv,
+                                      POLYFRAC_SOURCE_DIR "/prm/step-2.prm");
+      const unsigned int dim = prm.dim;
       for (const std::string &warning : prm.warnings)
         std::cout << "Warning: " << warning << std::endl;
 

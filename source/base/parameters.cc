@@ -719,6 +719,29 @@ namespace PolyFrac
 
 
 
+  Parameters
+  Parameters::from_command_line(const int          argc,
+                                char             **argv,
+                                const std::string &default_file)
+  {
+    const bool        has_file = argc > 1 && std::string(argv[1]) != "--set";
+    const std::string file     = has_file ? argv[1] : default_file;
+    std::vector<std::string> overrides;
+    for (int i = has_file ? 2 : 1; i < argc; ++i)
+      {
+        AssertThrow(std::string(argv[i]) == "--set" && i + 1 < argc,
+                    ExcMessage(std::string("Usage: ") + argv[0] +
+                               " [FILE.prm] [--set Subsection/Entry=value "
+                               "...]"));
+        overrides.push_back(argv[++i]);
+      }
+    Parameters prm(read_dimension(file));
+    prm.parse(file, overrides);
+    return prm;
+  }
+
+
+
   void
   Parameters::write_used_parameters(const std::string &name) const
   {

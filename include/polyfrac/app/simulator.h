@@ -8,7 +8,7 @@
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
-#include <polyfrac/postprocessing/error_evaluator.h>
+#include <polyfrac/postprocessing/convergence_table.h>
 
 #include <memory>
 #include <ostream>
@@ -40,18 +40,6 @@ namespace PolyFrac
     std::unique_ptr<DoFMap<dim>>          dofs;
   };
 
-  /** One row of convergence.csv. */
-  struct ConvergenceRow
-  {
-    unsigned int                level;
-    double                      h;
-    unsigned int                n_cells;
-    unsigned int                n_dofs;
-    Errors                      errors;
-    std::optional<unsigned int> newton_iterations;
-    double                      wall_seconds;
-  };
-
   /**
    * The PolyFrac program: runs the scene of a parameter file on each level
    * of the convergence study, writes the VTU files, `convergence.csv` and
@@ -70,9 +58,6 @@ namespace PolyFrac
   private:
     ConvergenceRow
     run_level(const unsigned int level, std::ostream &out);
-
-    void
-    write_table(std::ostream &out, const bool with_rates, const bool csv) const;
 
     const Parameters           &prm;
     std::vector<ConvergenceRow> rows;

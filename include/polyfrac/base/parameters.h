@@ -53,6 +53,16 @@ namespace PolyFrac
     parse(const std::string              &file_name,
           const std::vector<std::string> &overrides = {});
 
+    /**
+     * The parameters of a program called as `program [FILE.prm] [--set
+     * Subsection/Entry=value ...]`: reads the dimension, then parses the
+     * file (@p default_file if none is given) with the overrides.
+     */
+    static Parameters
+    from_command_line(const int          argc,
+                      char             **argv,
+                      const std::string &default_file);
+
     /** Writes the used parameters (all entries, with their documentation). */
     void
     write_used_parameters(const std::string &file_name) const;

@@ -1,0 +1,85 @@
+#include <polyfrac/postprocessing/convergence_table.h>
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+
+namespace PolyFrac
+{
+  void
+  write_convergence_table(std::ostream                      &out,
+                          const std::vector<ConvergenceRow> &rows,
+                          const bool                         with_rates,
+                          const bool                         csv)
+  {
+    using Column = std::pair<std::string, std::optional<ErrorValue> Errors::*>;
+    const std::vector<Column> columns = {{"err_u", &Errors::u},
+                                         {"err_grad_u", &Errors::grad_u},
+                                         {"err_jump", &Errors::jump},
+                                         {"err_lambda_hm12",
+                                          &Errors::lambda_hm12},
+                                         {"err_lambda_l2", &Errors::lambda_l2}};
+    if (csv)
+      {
+        out << "level,h,n_cells,n_dofs,err_u,err_grad_u,err_jump,"
+               "err_lambda_hm12,err_lambda_l2,newton_iterations,wall_seconds\n";
+        out << std::setprecision(8);
+        for (const ConvergenceRow &row : rows)
+          {
+            out << row.level << ',' << row.h << ',' << row.n_cells << ','
+                << row.n_dofs;
+            for (const auto &[name, member] : columns)
+              {
+                out << ',';
+                if (row.errors.*member)
+                  out << (row.errors.*member)->value;
+              }
+            out << ',';
+            if (row.newton_iterations)
+              out << *row.newton_iterations;
+            out << ',' << row.wall_seconds << '\n';
+          }
+        return;
+      }
+
+    out << std::left << std::setw(6) << "level" << std::setw(12) << "h"
+        << std::setw(10) << "n_cells" << std::setw(10) << "n_dofs";
+    for (const auto &[name, member] : columns)
+      if (!rows.empty() && rows[0].errors.*member)
+        {
+          out << std::setw(22)
+              << name + ((rows[0].errors.*member)->absolute ? "(abs)" : "");
+          if (with_rates)
+            out << std::setw(7) << "rate";
+        }
+    out << '\n';
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const ConvergenceRow &row = rows[r];
+        out << std::setw(6) << row.level << std::setw(12)
+            << std::setprecision(5) << row.h << std::setw(10) << row.n_cells
+            << std::setw(10) << row.n_dofs;
+        for (const auto &[name, member] : columns)
+          if (row.errors.*member)
+            {
+              out << std::setw(22) << std::scientific << std::setprecision(5)
+                  << (row.errors.*member)->value << std::defaultfloat;
+              if (with_rates)
+                {
+                  const double previous =
+                    (rows[r - 1 + (r == 0)].errors.*member)->value;
+                  if (r == 0 || std::abs(rows[r - 1].h / row.h - 1) < 1e-3 ||
+                      previous <= 0 || (row.errors.*member)->value <= 0)
+                    out << std::setw(7) << "-";
+                  else
+                    out << std::setw(7) << std::fixed << std::setprecision(2)
+                        << std::log(previous / (row.errors.*member)->value) /
+                             std::log(rows[r - 1].h / row.h)
+                        << std::defaultfloat;
+                }
+            }
+        out << '\n';
+      }
+    out << std::right;
+  }
+} // namespace PolyFrac
