@@ -304,42 +304,14 @@ namespace Step2
   };
 
 
-  // The frame of fracture face i, as rows (n^+, τ_1, ..., τ_{d−1}). In 2D
-  // τ is n^+ turned clockwise by 90 degrees, which is (B − A)/|B − A| for
-  // the segment A → B since n^+ is its left normal. In 3D we take the
-  // fracture's first tangent and complete the frame by n^+ × τ_1 (a tagged
-  // fracture has no stored tangent: any unit vector in its plane will do,
-  // since the conditions only involve |b_τ| and |λ_τ|, which do not depend
-  // on the choice of the tangent basis).
-  template <int dim>
-  Tensor<2, dim>
-  local_frame(const FractureNetwork<dim> &network, const unsigned int i)
-  {
-    const Tensor<1, dim> n = network.normal(i);
-    Tensor<2, dim>       Q;
-    Q[0] = n;
-    if constexpr (dim == 2)
-      {
-        Q[1][0] = n[1];
-        Q[1][1] = -n[0];
-      }
-    else
-      {
-        const unsigned int f = network.fracture_faces[i].fracture;
-        Tensor<1, 3>       t = network.fractures.empty() ?
-                                 Tensor<1, 3>() :
-                                 network.fractures[f].tangents[0];
-        if (t.norm() < 0.5)
-          {
-            t[std::abs(n[0]) < 0.9 ? 0 : 1] = 1;
-            t -= (t * n) * n;
-            t /= t.norm();
-          }
-        Q[1] = t;
-        Q[2] = cross_product_3d(n, t);
-      }
-    return Q;
-  }
+  // The frame of fracture face i, FractureNetwork::frame(), has the rows
+  // (n^+, τ_1, ..., τ_{d−1}). In 2D τ is n^+ turned clockwise by 90
+  // degrees, which is (B − A)/|B − A| for the segment A → B since n^+ is its
+  // left normal. In 3D it takes the fracture's first tangent and completes
+  // the frame by n^+ × τ_1 (a tagged fracture has no stored tangent: any
+  // unit vector in its plane will do, since the conditions only involve
+  // |b_τ| and |λ_τ|, which do not depend on the choice of the tangent
+  // basis).
 
 
   // @sect3{The complementarity functions, face by face}
@@ -428,7 +400,7 @@ namespace Step2
   {
     const FaceGeometry<dim> &face =
       geometry.faces[network.fracture_faces[i].face];
-    const Tensor<2, dim>   Q   = local_frame(network, i);
+    const Tensor<2, dim>   Q   = network.frame(i);
     const Elasticity<dim> &u   = contact.displacement();
     const std::string     &law = prm.contact.friction_law;
 
@@ -639,7 +611,7 @@ namespace Step2
     std::sort(order.begin(),
               order.end(),
               [&](const unsigned int a, const unsigned int b) {
-                const Tensor<1, dim> t = local_frame(network, a)[1];
+                const Tensor<1, dim> t = network.frame(a)[1];
                 return centroid(a) * t < centroid(b) * t;
               });
 
@@ -661,7 +633,7 @@ namespace Step2
       Tensor<1, dim> global;
       for (unsigned int d = 0; d < dim; ++d)
         global[d] = value[d];
-      return Tensor<1, dim>(local_frame(network, i) * global);
+      return Tensor<1, dim>(network.frame(i) * global);
     };
 
     // The rows, and the column scales for the round-off filter.
@@ -693,8 +665,8 @@ namespace Step2
            first_slip = std::numeric_limits<double>::max();
     for (unsigned int i = 0; i < n_faces; ++i)
       {
-        const FaceConditions<dim> c = evaluate(i);
-        const double position       = centroid(i) * local_frame(network, i)[1];
+        const FaceConditions<dim> c        = evaluate(i);
+        const double              position = centroid(i) * network.frame(i)[1];
         if (c.tangential == TangentialState::stick)
           last_stick = std::max(last_stick, position);
         else if (c.tangential == TangentialState::slip)
@@ -719,8 +691,8 @@ namespace Step2
       {
         const FaceConditions<dim> c = evaluate(i);
         out << std::setw(10) << std::setprecision(4)
-            << centroid(i) * local_frame(network, i)[1] << std::setw(15)
-            << state(c) << std::setprecision(6);
+            << centroid(i) * network.frame(i)[1] << std::setw(15) << state(c)
+            << std::setprecision(6);
         const auto column = [&](const double value) {
           out << std::setw(13) << value;
         };

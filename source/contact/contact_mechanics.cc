@@ -115,40 +115,6 @@ namespace PolyFrac
 
 
   template <int dim>
-  Tensor<2, dim>
-  ContactMechanics<dim>::frame(const unsigned int i) const
-  {
-    const Tensor<1, dim> n = network.normal(i);
-    Tensor<2, dim>       Q;
-    Q[0] = n;
-    if constexpr (dim == 2)
-      {
-        // τ = (B − A)/|B − A| for n^+ = left normal of A -> B.
-        Q[1][0] = n[1];
-        Q[1][1] = -n[0];
-      }
-    else
-      {
-        const auto  &ff = network.fracture_faces[i];
-        Tensor<1, 3> t  = network.fractures.empty() ?
-                            Tensor<1, 3>() :
-                            network.fractures[ff.fracture].tangents[0];
-        if (t.norm() < 0.5)
-          {
-            // Tagged fractures: any unit vector orthogonal to n.
-            t[std::abs(n[0]) < 0.9 ? 0 : 1] = 1;
-            t -= (t * n) * n;
-            t /= t.norm();
-          }
-        Q[1] = t;
-        Q[2] = cross_product_3d(n, t);
-      }
-    return Q;
-  }
-
-
-
-  template <int dim>
   Tensor<1, dim>
   ContactMechanics<dim>::face_jump(const Vector<double> &x,
                                    const unsigned int    i) const
@@ -196,7 +162,7 @@ namespace PolyFrac
       {
         const double area =
           geometry.faces[network.fracture_faces[i].face].measure;
-        const Tensor<2, dim> Q      = frame(i);
+        const Tensor<2, dim> Q      = network.frame(i);
         const Tensor<1, dim> lambda = Q * face_multiplier(x, i);
         const Tensor<1, dim> j      = Q * face_jump(x, i);
         const Tensor<1, dim> j_old  = friction_law == "Coulomb" ?

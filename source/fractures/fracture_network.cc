@@ -261,6 +261,39 @@ namespace PolyFrac
 
 
 
+  template <int dim>
+  Tensor<2, dim>
+  FractureNetwork<dim>::frame(const unsigned int i) const
+  {
+    const Tensor<1, dim> n = normal(i);
+    Tensor<2, dim>       Q;
+    Q[0] = n;
+    if constexpr (dim == 2)
+      {
+        // τ = (B − A)/|B − A| for n^+ = left normal of A -> B.
+        Q[1][0] = n[1];
+        Q[1][1] = -n[0];
+      }
+    else
+      {
+        const auto  &ff = fracture_faces[i];
+        Tensor<1, 3> t  = fractures.empty() ? Tensor<1, 3>() :
+                                              fractures[ff.fracture].tangents[0];
+        if (t.norm() < 0.5)
+          {
+            // Tagged fractures: any unit vector orthogonal to n.
+            t[std::abs(n[0]) < 0.9 ? 0 : 1] = 1;
+            t -= (t * n) * n;
+            t /= t.norm();
+          }
+        Q[1] = t;
+        Q[2] = cross_product_3d(n, t);
+      }
+    return Q;
+  }
+
+
+
   template struct Fracture<2>;
   template struct Fracture<3>;
   template class FractureNetwork<2>;

@@ -97,10 +97,6 @@ namespace PolyFrac
     std::vector<TangentialState> tangential_state;
 
   private:
-    /** Local frame of fracture face i: rows n^+, τ_1 (, τ_2). */
-    Tensor<2, dim>
-    frame(const unsigned int i) const;
-
     /** Jump [[u]]_σ and multiplier λ_σ of face i in @p x. */
     Tensor<1, dim>
     face_jump(const Vector<double> &x, const unsigned int i) const;

@@ -114,6 +114,14 @@ namespace PolyFrac
       return fracture_faces[i].normal;
     }
 
+    /**
+     * The local frame of fracture face @p i as rows n^+, τ_1 (, τ_2): 2D
+     * τ = (B − A)/|B − A|; 3D τ_1 from the fracture (P2 − P1 projected),
+     * or any unit vector in the plane for a tagged fracture, τ_2 = n^+ × τ_1.
+     */
+    Tensor<2, dim>
+    frame(const unsigned int i) const;
+
     unsigned int
     n_fractures() const
     {
