@@ -75,15 +75,6 @@ namespace PolyFrac
 
 
   template <int dim>
-  bool
-  Fracture<dim>::on_plane(const Point<dim> &p, const double tol) const
-  {
-    return std::abs((p - points[0]) * normal) <= tol;
-  }
-
-
-
-  template <int dim>
   double
   Fracture<dim>::distance(const Point<dim> &p) const
   {

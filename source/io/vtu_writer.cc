@@ -131,7 +131,7 @@ namespace PolyFrac
                                                                network,
                                                                K);
             values = elasticity.local_values(K);
-            sigma  = elasticity.stress(K);
+            sigma  = elasticity.stress(local->gradient(values));
             cached = K;
           }
         const auto [type, order] = vtk_cell(fine.type);

@@ -1,3 +1,4 @@
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria_accessor.h>
@@ -113,18 +114,8 @@ namespace PolyFrac
           for (const unsigned int v : face.vertices)
             fixed[v] = true;
 
-      Point<dim> lower, upper;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = std::numeric_limits<double>::max();
-          upper[d] = -lower[d];
-        }
-      for (const Point<dim> &p : mesh.vertices)
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lower[d] = std::min(lower[d], p[d]);
-            upper[d] = std::max(upper[d], p[d]);
-          }
+      const auto [lower, upper] =
+        BoundingBox<dim>(mesh.vertices).get_boundary_points();
 
       std::mt19937                           generator(prm.mesh.random_seed);
       std::uniform_real_distribution<double> uniform(-1., 1.);

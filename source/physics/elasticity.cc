@@ -451,13 +451,11 @@ namespace PolyFrac
 
   template <int dim>
   Tensor<2, dim>
-  Elasticity<dim>::stress(const unsigned int c) const
+  Elasticity<dim>::stress(const Tensor<2, dim> &gradient) const
   {
-    const LocalReconstruction<dim> local(geometry, dofs, network, c);
-    const Tensor<2, dim>           grad   = local.gradient(local_values(c));
-    const Tensor<2, dim>           strain = 0.5 * (grad + transpose(grad));
+    const Tensor<2, dim> strain = 0.5 * (gradient + transpose(gradient));
     return 2 * prm.lame_mu * strain +
-           prm.lame_lambda * trace(grad) * unit_symmetric_tensor<dim>();
+           prm.lame_lambda * trace(gradient) * unit_symmetric_tensor<dim>();
   }
 
 

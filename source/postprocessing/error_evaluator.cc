@@ -1,5 +1,9 @@
+#include <deal.II/base/bounding_box.h>
+
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
+
+#include <array>
 
 namespace PolyFrac
 {
@@ -11,6 +15,38 @@ namespace PolyFrac
       if (norm_squared < 1e-28)
         return {std::sqrt(error_squared), true};
       return {std::sqrt(error_squared / norm_squared), false};
+    }
+
+    /**
+     * Face-centroid errors of a fracture field: Σ_σ |σ| |e_σ|²,
+     * Σ_σ h_σ |σ| |e_σ|² and Σ_σ |σ| |exact(x̄_σ)|², with e_σ =
+     * exact(x̄_σ) − discrete(i) on fracture face i.
+     */
+    template <int dim, typename DiscreteField>
+    std::array<double, 3>
+    fracture_face_errors(const Function<dim>        &exact,
+                         const MeshGeometry<dim>    &geometry,
+                         const FractureNetwork<dim> &network,
+                         const DiscreteField        &discrete)
+    {
+      std::array<double, 3> sums = {{0., 0., 0.}};
+      Vector<double>        value(dim);
+      for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+        {
+          const auto &face = geometry.faces[network.fracture_faces[i].face];
+          exact.vector_value(face.centroid, value);
+          const Tensor<1, dim> field      = discrete(i);
+          double               difference = 0, norm = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              difference += std::pow(value(d) - field[d], 2);
+              norm += value(d) * value(d);
+            }
+          sums[0] += face.measure * difference;
+          sums[1] += face.diameter * face.measure * difference;
+          sums[2] += face.measure * norm;
+        }
+      return sums;
     }
   } // namespace
 
@@ -63,20 +99,11 @@ namespace PolyFrac
                                prm.exact.displacement_jump,
                                dim,
                                prm.constants);
-        double         e = 0, n = 0;
-        Vector<double> value(dim);
-        for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-          {
-            const auto &face = geometry.faces[network.fracture_faces[i].face];
-            exact->vector_value(face.centroid, value);
-            const Tensor<1, dim> jump_h = elasticity.jump_value(i);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                e += face.measure * std::pow(value(d) - jump_h[d], 2);
-                n += face.measure * value(d) * value(d);
-              }
-          }
-        errors.jump = ratio(e, n);
+        const auto sums = fracture_face_errors<dim>(
+          *exact, geometry, network, [&elasticity](const unsigned int i) {
+            return elasticity.jump_value(i);
+          });
+        errors.jump = ratio(sums[0], sums[2]);
       }
     if (!prm.exact.contact_traction.empty())
       {
@@ -87,32 +114,15 @@ namespace PolyFrac
                                prm.constants);
         // err_lambda_hm12 weighs each face by h_σ and divides by diam(Ω):
         // a computable surrogate of the H^{-1/2}(Γ) error.
-        Point<dim> lower = geometry.mesh.vertices[0], upper = lower;
-        for (const Point<dim> &p : geometry.mesh.vertices)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] = std::min(lower[d], p[d]);
-              upper[d] = std::max(upper[d], p[d]);
-            }
-        const double   diameter = lower.distance(upper);
-        double         e = 0, e_h = 0, n = 0;
-        Vector<double> value(dim);
-        for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-          {
-            const auto &face = geometry.faces[network.fracture_faces[i].face];
-            exact->vector_value(face.centroid, value);
-            const Tensor<1, dim> lambda_h   = elasticity.fracture_traction(i);
-            double               difference = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                difference += std::pow(value(d) - lambda_h[d], 2);
-                n += face.measure * value(d) * value(d);
-              }
-            e += face.measure * difference;
-            e_h += face.diameter * face.measure * difference;
-          }
-        errors.lambda_l2   = ratio(e, n);
-        errors.lambda_hm12 = ratio(e_h, diameter * n);
+        const auto corners =
+          BoundingBox<dim>(geometry.mesh.vertices).get_boundary_points();
+        const double diameter = corners.first.distance(corners.second);
+        const auto   sums     = fracture_face_errors<dim>(
+          *exact, geometry, network, [&elasticity](const unsigned int i) {
+            return elasticity.fracture_traction(i);
+          });
+        errors.lambda_l2   = ratio(sums[0], sums[2]);
+        errors.lambda_hm12 = ratio(sums[1], diameter * sums[2]);
       }
     return errors;
   }

@@ -34,9 +34,6 @@ namespace PolyFrac
     double
     distance(const Point<dim> &p) const;
 
-    /** True if @p p lies on the plane (line) of the fracture within @p tol. */
-    bool
-    on_plane(const Point<dim> &p, const double tol) const;
 
     /** True if @p p lies on the fracture's boundary (tips, polygon edges). */
     bool

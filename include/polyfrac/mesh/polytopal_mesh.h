@@ -110,14 +110,6 @@ namespace PolyFrac
       return faces[f].cells[0] == c ? 1. : -1.;
     }
 
-    /** The neighbour of cell @p c across face @p f (invalid at the boundary).
-     */
-    unsigned int
-    neighbor(const unsigned int c, const unsigned int f) const
-    {
-      return faces[f].cells[0] == c ? faces[f].cells[1] : faces[f].cells[0];
-    }
-
     /** For each vertex, the faces whose loop contains it. */
     std::vector<std::vector<unsigned int>>
     vertex_to_faces() const;

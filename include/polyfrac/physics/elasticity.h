@@ -71,9 +71,9 @@ namespace PolyFrac
     Tensor<1, dim>
     jump_value(const unsigned int i) const;
 
-    /** σ_K = 2μ ε_K + λ div_K I of cell @p c. */
+    /** σ = 2μ ε + λ div I of the displacement gradient @p gradient (∇^K u). */
     Tensor<2, dim>
-    stress(const unsigned int c) const;
+    stress(const Tensor<2, dim> &gradient) const;
 
     /**
      * λ_σ on fracture face @p i: the prescribed λ(x̄_σ), or the multiplier
