@@ -206,9 +206,13 @@ namespace PolyFrac
       {
         contact =
           std::make_unique<ContactMechanics<dim>>(prm, geometry, network, dofs);
+        if (previous_multipliers &&
+            prm.nonlinear.initial_guess == "previous level")
+          contact->start_from(*previous_multipliers);
         contact->solve(out);
-        newton_iterations = contact->n_newton_iterations();
-        n_unknowns        = contact->n_unknowns();
+        previous_multipliers = contact->multiplier_field();
+        newton_iterations    = contact->n_newton_iterations();
+        n_unknowns           = contact->n_unknowns();
         out << "Newton iterations: " << *newton_iterations << std::endl;
       }
     else

@@ -372,6 +372,14 @@ namespace PolyFrac
       "Newton stops when the active sets are unchanged and both "
       "relative residuals (momentum, complementarity) are below "
       "this.");
+    prm.declare_entry(
+      "Initial guess",
+      "previous level",
+      Patterns::Selection("previous level|zero"),
+      "previous level: on levels after the first, Newton starts from the "
+      "multipliers of the previous level (nearest face centroid on the same "
+      "fracture) and the displacement they load, one elasticity solve "
+      "(nested iteration). zero: every level starts from u = 0, λ = 0.");
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");
@@ -658,6 +666,7 @@ namespace PolyFrac
     prm->enter_subsection("Nonlinear solver");
     nonlinear.max_iterations = prm->get_integer("Maximum iterations");
     nonlinear.tolerance      = prm->get_double("Tolerance");
+    nonlinear.initial_guess  = prm->get("Initial guess");
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
@@ -711,6 +720,7 @@ namespace PolyFrac
           warn_if_set("Contact", entry);
         warn_if_set("Nonlinear solver", "Maximum iterations");
         warn_if_set("Nonlinear solver", "Tolerance");
+        warn_if_set("Nonlinear solver", "Initial guess");
         warn_if_set("Exact solution", "Contact traction");
       }
     else

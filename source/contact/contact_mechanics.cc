@@ -70,30 +70,9 @@ namespace PolyFrac
         for (unsigned int d = 0; d < dim; ++d)
           dirichlet[dofs.bubble_dof(i, d)] = 0.;
 
-    // The pattern of the whole saddle-point system (u, λ).
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;
-    DynamicSparsityPattern dsp(n);
-    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
-      {
-        const auto local = dofs.cell_dofs(c);
-        for (const auto a : local)
-          for (const auto b : local)
-            dsp.add(a, b);
-      }
-    for (unsigned int i = 0; i < n_faces; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          for (unsigned int e = 0; e < dim; ++e)
-            dsp.add(dofs.multiplier_dof(i, d), dofs.multiplier_dof(i, e));
-          for (const auto &[block, w] : jumps[i])
-            for (unsigned int e = 0; e < dim; ++e)
-              {
-                dsp.add(dofs.multiplier_dof(i, d), dim * block + e);
-                dsp.add(dim * block + e, dofs.multiplier_dof(i, d));
-              }
-        }
-    sparsity.copy_from(dsp);
+    make_saddle_point_pattern(geometry, dofs, jumps, sparsity);
     stiffness.reinit(sparsity);
     load_vector.reinit(n);
     elasticity.assemble_operator(stiffness, load_vector);
@@ -110,6 +89,10 @@ namespace PolyFrac
 
     solution.reinit(n);
     previous_step.reinit(n);
+
+    if (prm.solver.method == "AMG" && prm.contact.bubbles)
+      condensation = std::make_unique<FaceCondensation<dim>>(
+        stiffness, dofs, jumps, dirichlet, geometry.mesh.vertices, prm.solver);
   }
 
 
@@ -144,31 +127,30 @@ namespace PolyFrac
   template <int dim>
   typename ContactMechanics<dim>::Residual
   ContactMechanics<dim>::residual(const Vector<double> &x,
-                                  const double          load,
-                                  SparseMatrix<double> *jacobian) const
+                                  const double          load) const
   {
     const unsigned int n_faces = network.n_fracture_faces();
     Residual           R;
     R.vector.reinit(x.size());
     R.normal.resize(n_faces);
     R.tangential.resize(n_faces);
+    R.faces.resize(n_faces);
     stiffness.vmult(R.vector, x);
     R.vector.add(-load, load_vector);
-    if (jacobian)
-      jacobian->copy_from(stiffness);
 
     double complementarity = 0, measure = 0, stress_scale = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
       {
-        const double area =
-          geometry.faces[network.fracture_faces[i].face].measure;
-        const Tensor<2, dim> Q      = network.frame(i);
-        const Tensor<1, dim> lambda = Q * face_multiplier(x, i);
-        const Tensor<1, dim> j      = Q * face_jump(x, i);
-        const Tensor<1, dim> j_old  = friction_law == "Coulomb" ?
-                                        Q * face_jump(previous_step, i) :
-                                        Tensor<1, dim>();
-        const double         b      = beta[i];
+        FaceLinearisation<dim> &face = R.faces[i];
+        face.measure = geometry.faces[network.fracture_faces[i].face].measure;
+        face.frame   = network.frame(i);
+        const Tensor<2, dim> &Q      = face.frame;
+        const Tensor<1, dim>  lambda = Q * face_multiplier(x, i);
+        const Tensor<1, dim>  j      = Q * face_jump(x, i);
+        const Tensor<1, dim>  j_old  = friction_law == "Coulomb" ?
+                                         Q * face_jump(previous_step, i) :
+                                         Tensor<1, dim>();
+        const double          b      = beta[i];
 
         // b_n, b_τ and the threshold g of §6.
         const double   b_n = lambda[0] + b * j[0];
@@ -181,19 +163,20 @@ namespace PolyFrac
                                     friction_coefficient * std::max(b_n, 0.) :
                                     threshold[i];
 
-        // Local residual R = λ − (projections) and its generalised
-        // derivatives M_λ = ∂R/∂λ, M_j = ∂R/∂[[u]] (local components).
-        Tensor<1, dim> r_local;
-        Tensor<2, dim> M_lambda, M_jump;
+        // Local residual r = λ − (projections) and its generalised
+        // derivatives M_λ = ∂r/∂λ, M_j = ∂r/∂[[u]] (local components).
+        Tensor<1, dim> &r        = face.r;
+        Tensor<2, dim> &M_lambda = face.M_lambda;
+        Tensor<2, dim> &M_jump   = face.M_jump;
         R.normal[i] = in_contact ? NormalState::contact : NormalState::open;
         if (in_contact)
           {
-            r_local[0]   = lambda[0] - b_n;
+            r[0]         = lambda[0] - b_n;
             M_jump[0][0] = -b;
           }
         else
           {
-            r_local[0]     = lambda[0];
+            r[0]           = lambda[0];
             M_lambda[0][0] = 1;
           }
 
@@ -205,7 +188,7 @@ namespace PolyFrac
             R.tangential[i] = TangentialState::free;
             for (unsigned int d = 1; d < dim; ++d)
               {
-                r_local[d]     = lambda[d];
+                r[d]           = lambda[d];
                 M_lambda[d][d] = 1;
               }
           }
@@ -214,7 +197,7 @@ namespace PolyFrac
             R.tangential[i] = TangentialState::stick;
             for (unsigned int d = 1; d < dim; ++d)
               {
-                r_local[d]   = lambda[d] - b_t[d];
+                r[d]         = lambda[d] - b_t[d];
                 M_jump[d][d] = -b;
               }
           }
@@ -225,7 +208,7 @@ namespace PolyFrac
             const Tensor<1, dim> hat = b_t / b_t_norm;
             for (unsigned int d = 1; d < dim; ++d)
               {
-                r_local[d] = lambda[d] - g * hat[d];
+                r[d] = lambda[d] - g * hat[d];
                 for (unsigned int e = 1; e < dim; ++e)
                   {
                     const double P =
@@ -241,58 +224,24 @@ namespace PolyFrac
               }
           }
 
-        complementarity += area * r_local.norm_square();
-        measure += area;
+        complementarity += face.measure * r.norm_square();
+        measure += face.measure;
         stress_scale =
           std::max({stress_scale, lambda.norm(), std::abs(b_n), b_t_norm});
 
-        // Momentum: Σ |σ| λ_σ·[[v]]_σ. Complementarity rows: −|σ|/β Q^T R.
+        // Momentum: Σ |σ| λ_σ·[[v]]_σ. Complementarity rows: −|σ|/β Q^T r.
         const Tensor<1, dim> lambda_global = transpose(Q) * lambda;
-        const Tensor<1, dim> r_global      = transpose(Q) * r_local;
-        const double         scale         = -area / b;
+        const Tensor<1, dim> r_global      = transpose(Q) * r;
         for (unsigned int d = 0; d < dim; ++d)
-          R.vector(dofs.multiplier_dof(i, d)) = scale * r_global[d];
+          R.vector(dofs.multiplier_dof(i, d)) = -face.measure / b * r_global[d];
         for (const auto &[block, w] : jumps[i])
           for (unsigned int d = 0; d < dim; ++d)
-            R.vector(dim * block + d) += area * w * lambda_global[d];
-
-        if (jacobian)
-          {
-            const Tensor<2, dim> G_lambda = scale * transpose(Q) * M_lambda * Q;
-            const Tensor<2, dim> G_jump   = scale * transpose(Q) * M_jump * Q;
-            for (unsigned int d = 0; d < dim; ++d)
-              for (unsigned int e = 0; e < dim; ++e)
-                jacobian->add(dofs.multiplier_dof(i, d),
-                              dofs.multiplier_dof(i, e),
-                              G_lambda[d][e]);
-            for (const auto &[block, w] : jumps[i])
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  jacobian->add(dim * block + d,
-                                dofs.multiplier_dof(i, d),
-                                area * w);
-                  for (unsigned int e = 0; e < dim; ++e)
-                    jacobian->add(dofs.multiplier_dof(i, d),
-                                  dim * block + e,
-                                  w * G_jump[d][e]);
-                }
-          }
+            R.vector(dim * block + d) += face.measure * w * lambda_global[d];
       }
 
-    // Dirichlet dofs: fixed, so no residual and an identity row.
+    // Dirichlet dofs are fixed, so they have no residual.
     for (const auto &[dof, value] : dirichlet)
-      {
-        R.vector(dof) = 0;
-        if (jacobian)
-          {
-            const double diagonal =
-              std::max(std::abs(stiffness.diag_element(dof)), 1e-300);
-            for (auto entry = jacobian->begin(dof); entry != jacobian->end(dof);
-                 ++entry)
-              entry->value() = 0;
-            jacobian->set(dof, dof, diagonal);
-          }
-      }
+      R.vector(dof) = 0;
 
     Vector<double> momentum(R.vector);
     for (unsigned int i = 0; i < n_faces; ++i)
@@ -310,6 +259,119 @@ namespace PolyFrac
 
 
   template <int dim>
+  unsigned int
+  ContactMechanics<dim>::linear_step(const Residual    &R,
+                                     const unsigned int iteration,
+                                     Vector<double>    &step)
+  {
+    if (condensation && FaceCondensation<dim>::condensable(R.faces))
+      {
+        return condensation->solve(R.faces, R.vector, step);
+      }
+
+    SparseMatrix<double> jacobian(sparsity);
+    assemble_saddle_point_jacobian(
+      stiffness, R.faces, beta, jumps, dofs, dirichlet, jacobian);
+    Vector<double> rhs(R.vector);
+    rhs *= -1.;
+    step.reinit(rhs.size());
+    SparseDirectUMFPACK direct;
+    try
+      {
+        direct.initialize(jacobian);
+      }
+    catch (const std::exception &)
+      {
+        AssertThrow(false,
+                    ExcMessage("The Newton Jacobian of the contact problem is "
+                               "singular (UMFPACK) at iteration " +
+                               std::to_string(iteration) +
+                               ": with every face in contact and no bubbles "
+                               "(Contact/Bubbles = false), some multiplier "
+                               "patterns are invisible to the discrete jumps. "
+                               "Use Bubbles = true."));
+      }
+    direct.vmult(step, rhs);
+    return 0;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::start_from(const MultiplierField<dim> &coarse)
+  {
+    initial_multipliers.clear();
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto       &face    = network.fracture_faces[i];
+        const Point<dim> &x       = geometry.faces[face.face].centroid;
+        double            nearest = std::numeric_limits<double>::max();
+        Tensor<1, dim>    value;
+        for (unsigned int k = 0; k < coarse.values.size(); ++k)
+          if (coarse.fracture[k] == face.fracture &&
+              x.distance_square(coarse.centroids[k]) < nearest)
+            {
+              nearest = x.distance_square(coarse.centroids[k]);
+              value   = coarse.values[k];
+            }
+        initial_multipliers.push_back(value);
+      }
+  }
+
+
+
+  template <int dim>
+  MultiplierField<dim>
+  ContactMechanics<dim>::multiplier_field() const
+  {
+    MultiplierField<dim> field;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto &face = network.fracture_faces[i];
+        field.fracture.push_back(face.fracture);
+        field.centroids.push_back(geometry.faces[face.face].centroid);
+        field.values.push_back(face_multiplier(solution, i));
+      }
+    return field;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::predict(const std::vector<Tensor<1, dim>> &multipliers,
+                                 const double                       load,
+                                 Vector<double>                    &x)
+  {
+    for (const auto &[dof, value] : dirichlet)
+      x(dof) = load * value;
+    for (unsigned int i = 0; i < multipliers.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        x(dofs.multiplier_dof(i, d)) = load * multipliers[i][d];
+
+    // Every face prescribes its multiplier: M_λ = I, M_j = 0, r = 0.
+    Residual R = residual(x, load);
+    for (auto &face : R.faces)
+      {
+        face.M_lambda = Tensor<2, dim>();
+        face.M_jump   = Tensor<2, dim>();
+        face.r        = Tensor<1, dim>();
+        for (unsigned int d = 0; d < dim; ++d)
+          face.M_lambda[d][d] = 1;
+      }
+    for (unsigned int i = 0; i < multipliers.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        R.vector(dofs.multiplier_dof(i, d)) = 0;
+    Vector<double> step;
+    linear_step(R, 0, step);
+    x += step;
+    ++total_iterations;
+  }
+
+
+
+  template <int dim>
   bool
   ContactMechanics<dim>::newton(const double    load,
                                 Vector<double> &x,
@@ -318,7 +380,6 @@ namespace PolyFrac
     for (const auto &[dof, value] : dirichlet)
       x(dof) = load * value;
 
-    SparseMatrix<double>       jacobian(sparsity);
     std::set<std::vector<int>> seen_states;
     std::vector<int>           last_states;
     double                     best_merit = std::numeric_limits<double>::max();
@@ -329,7 +390,7 @@ namespace PolyFrac
 
     for (unsigned int it = 1; it <= prm.nonlinear.max_iterations; ++it)
       {
-        const Residual R = residual(x, load, &jacobian);
+        const Residual R = residual(x, load);
         ++total_iterations;
 
         std::vector<int> states;
@@ -377,26 +438,11 @@ namespace PolyFrac
             continue;
           }
 
-        Vector<double> step(x.size()), rhs(R.vector);
-        rhs *= -1.;
-        SparseDirectUMFPACK direct;
-        try
-          {
-            direct.initialize(jacobian);
-          }
-        catch (const std::exception &)
-          {
-            AssertThrow(false,
-                        ExcMessage(
-                          "The Newton Jacobian of the contact problem is "
-                          "singular (UMFPACK) at iteration " +
-                          std::to_string(it) +
-                          ": with every face in contact and no bubbles "
-                          "(Contact/Bubbles = false), some multiplier "
-                          "patterns are invisible to the discrete jumps. "
-                          "Use Bubbles = true."));
-          }
-        direct.vmult(step, rhs);
+        Vector<double>     step;
+        const unsigned int cg_iterations = linear_step(R, it, step);
+        if (cg_iterations > 0)
+          out << "    condensed step: " << cg_iterations << " CG iterations"
+              << std::endl;
 
         double alpha = 1;
         if (cycling)
@@ -406,7 +452,7 @@ namespace PolyFrac
               {
                 trial = x;
                 trial.add(alpha, step);
-                if (merit(residual(trial, load, nullptr)) < merit(R))
+                if (merit(residual(trial, load)) < merit(R))
                   break;
               }
             out << "  (active set cycles: damped step " << alpha << ")"
@@ -436,11 +482,18 @@ namespace PolyFrac
             Vector<double> x    = solution;
             if (n_steps > 1 || load < 1)
               out << " Load step to " << load << std::endl;
+            if (reached == 0 && !initial_multipliers.empty())
+              {
+                out << "  Start: the previous level's multipliers and the "
+                       "displacement they load"
+                    << std::endl;
+                predict(initial_multipliers, load, x);
+              }
             if (newton(load, x, out))
               {
                 // The states of the converged step, with the slip
                 // increment from the previous step (Coulomb).
-                const Residual R = residual(x, load, nullptr);
+                const Residual R = residual(x, load);
                 normal_state     = R.normal;
                 tangential_state = R.tangential;
                 solution         = x;

@@ -1,16 +1,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <polyfrac/base/expressions.h>
+#include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/elasticity.h>
-
-#include <Epetra_MultiVector.h>
-#include <Teuchos_ParameterList.hpp>
 
 #include <algorithm>
 #include <memory>
@@ -18,60 +13,6 @@
 
 namespace PolyFrac
 {
-  namespace
-  {
-    /**
-     * The rigid-body modes of the displacement unknowns, on the row map of
-     * @p matrix, for the near null space of ML's smoothed aggregation:
-     * dim translations e_c, then the dim(dim-1)/2 infinitesimal rotations
-     * in the (x_i, x_j) planes, i < j, about the mean x_0 of the node-side
-     * vertices (2D: (-y, x); 3D: about z, y, x).
-     *
-     * Node side n takes the value of each mode at its vertex. The bubbles
-     * are increments of a face mean over the node-side interpolant, which a
-     * rigid motion already reproduces, so their entries are 0.
-     *
-     * With translations only, the coarse spaces cannot represent rotations,
-     * low-energy motions that the smoother damps poorly; adding them cuts
-     * the CG iterations by 20-45 % (benchmarks/README.md).
-     */
-    template <int dim>
-    std::unique_ptr<Epetra_MultiVector>
-    rigid_body_modes(const DoFMap<dim>             &dofs,
-                     const std::vector<Point<dim>> &vertices,
-                     const Epetra_RowMatrix        &matrix)
-    {
-      Point<dim> origin;
-      for (const auto &side : dofs.node_sides)
-        origin += vertices[side.vertex] / dofs.n_node_sides();
-
-      const Epetra_Map &map = matrix.OperatorDomainMap();
-      auto              modes =
-        std::make_unique<Epetra_MultiVector>(map, dim * (dim + 1) / 2);
-      for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
-        {
-          const auto row = [&](const unsigned int c) {
-            const int local =
-              map.LID(static_cast<TrilinosWrappers::types::int_type>(
-                dofs.node_side_dof(n, c)));
-            Assert(local >= 0, ExcInternalError());
-            return local;
-          };
-          for (unsigned int c = 0; c < dim; ++c)
-            (*modes)[c][row(c)] = 1.;
-
-          const Tensor<1, dim> x = vertices[dofs.node_sides[n].vertex] - origin;
-          unsigned int         mode = dim;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = i + 1; j < dim; ++j, ++mode)
-              {
-                (*modes)[mode][row(i)] = -x[j];
-                (*modes)[mode][row(j)] = x[i];
-              }
-        }
-      return modes;
-    }
-  } // namespace
 
 
 
@@ -360,64 +301,14 @@ namespace PolyFrac
         direct.vmult(solution, rhs);
       }
     else
-      iterations = solve_amg();
+      iterations = solve_cg_amg(trilinos_matrix,
+                                solution,
+                                rhs,
+                                dofs,
+                                geometry.mesh.vertices,
+                                prm.solver);
     constraints.distribute(solution);
     return iterations;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  Elasticity<dim>::solve_amg()
-  {
-    // AdditionalData has no room for rotations in deal.II 9.4: let it fill
-    // the ML list (smoother, aggregation) with no constant modes, then
-    // set the null space by hand. ML reads the vectors during initialize(),
-    // so the multivector must outlive it; it lives to the end of the solve.
-    //
-    // "PDE equations" = dim makes ML aggregate whole dim-blocks of rows
-    // (a node side or a bubble) instead of single rows. Without it, each
-    // scalar aggregate carries all 3 (2D) or 6 (3D) modes and the 3D coarse
-    // operator grows to several times the fine one, which costs more than
-    // the rotations save in iterations.
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = false;
-    data.smoother_sweeps       = 2;
-    data.aggregation_threshold = 0.02;
-    Teuchos::ParameterList              parameters;
-    std::unique_ptr<Epetra_MultiVector> modes;
-    data.set_parameters(parameters, modes, trilinos_matrix.trilinos_matrix());
-    modes = rigid_body_modes(dofs,
-                             geometry.mesh.vertices,
-                             trilinos_matrix.trilinos_matrix());
-    parameters.set("null space: type", "pre-computed");
-    parameters.set("null space: dimension", modes->NumVectors());
-    parameters.set("null space: vectors", modes->Values());
-    parameters.set("PDE equations", static_cast<int>(dim));
-
-    TrilinosWrappers::PreconditionAMG amg;
-    amg.initialize(trilinos_matrix, parameters);
-    SolverControl            control(prm.solver.max_iterations,
-                          prm.solver.tolerance * rhs.l2_norm());
-    SolverCG<Vector<double>> cg(control);
-    try
-      {
-        cg.solve(trilinos_matrix, solution, rhs, amg);
-      }
-    catch (const SolverControl::NoConvergence &e)
-      {
-        AssertThrow(false,
-                    ExcMessage("The AMG-preconditioned CG solver did not "
-                               "converge in " +
-                               std::to_string(e.last_step) +
-                               " iterations (residual " +
-                               std::to_string(e.last_residual) +
-                               "). Raise Linear solver/Maximum iterations "
-                               "or use Method = direct."));
-      }
-    return control.last_step();
   }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <polyfrac/base/parameters.h>
+#include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/discretization/geometry.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
@@ -11,6 +12,7 @@
 #include <polyfrac/postprocessing/convergence_table.h>
 
 #include <memory>
+#include <optional>
 #include <ostream>
 
 namespace PolyFrac
@@ -61,6 +63,8 @@ namespace PolyFrac
 
     const Parameters           &prm;
     std::vector<ConvergenceRow> rows;
+    /** The multipliers of the last level (contact mechanics). */
+    std::optional<MultiplierField<dim>> previous_multipliers;
   };
 } // namespace PolyFrac
 

@@ -150,6 +150,8 @@ namespace PolyFrac
     {
       unsigned int max_iterations;
       double       tolerance;
+      /** "previous level" (nested iteration) or "zero". */
+      std::string initial_guess;
     } nonlinear;
 
     /** Linear solver. */

@@ -6,6 +6,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
+#include <polyfrac/contact/face_condensation.h>
+#include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/physics/elasticity.h>
 
 #include <memory>
@@ -30,6 +32,18 @@ namespace PolyFrac
     stick,
     slip,
     free
+  };
+
+  /**
+   * The multipliers of a converged level, face by face, with the fracture
+   * and centroid of each face: the start of Newton on the next level.
+   */
+  template <int dim>
+  struct MultiplierField
+  {
+    std::vector<unsigned int>   fracture;
+    std::vector<Point<dim>>     centroids;
+    std::vector<Tensor<1, dim>> values;
   };
 
   /**
@@ -58,6 +72,15 @@ namespace PolyFrac
    * damped steps (backtracking on the residual); a load step that does not
    * converge is cut in halves; when everything fails, the solver stops with
    * an error that says what it tried.
+   *
+   * Nested iteration: given the multipliers of a coarser level
+   * (start_from()), the first load step starts from them (each face takes
+   * the value of the nearest coarse face centroid on its fracture) and
+   * from the displacement they load, one elasticity solve that counts as a
+   * Newton iteration. The active sets then start next to the converged
+   * ones, so the number of iterations stays bounded under refinement,
+   * where a cold start moves a stick/slip front by a few faces per
+   * iteration.
    */
   template <int dim>
   class ContactMechanics
@@ -67,6 +90,14 @@ namespace PolyFrac
                      const MeshGeometry<dim>    &geometry,
                      const FractureNetwork<dim> &network,
                      const DoFMap<dim>          &dofs);
+
+    /** Starts the first load step from the multipliers of @p coarse. */
+    void
+    start_from(const MultiplierField<dim> &coarse);
+
+    /** The converged multipliers, for start_from() on the next level. */
+    MultiplierField<dim>
+    multiplier_field() const;
 
     /** Runs all load steps; prints each Newton iteration to @p out. */
     void
@@ -105,20 +136,40 @@ namespace PolyFrac
 
     /**
      * The residual of @p x at load factor @p load (momentum rows zero on
-     * Dirichlet dofs), the states, and the two relative residual norms.
-     * If @p jacobian is given, also the generalised Jacobian.
+     * Dirichlet dofs), the states, the linearised conditions of each face,
+     * and the two relative residual norms.
      */
     struct Residual
     {
-      Vector<double>               vector;
-      double                       momentum, complementarity;
-      std::vector<NormalState>     normal;
-      std::vector<TangentialState> tangential;
+      Vector<double>                      vector;
+      double                              momentum, complementarity;
+      std::vector<NormalState>            normal;
+      std::vector<TangentialState>        tangential;
+      std::vector<FaceLinearisation<dim>> faces;
     };
     Residual
-    residual(const Vector<double> &x,
-             const double          load,
-             SparseMatrix<double> *jacobian) const;
+    residual(const Vector<double> &x, const double load) const;
+
+    /**
+     * The Newton step for @p R: condensed face by face and solved by
+     * AMG-preconditioned CG (Linear solver/Method = AMG, when every face
+     * allows it), else UMFPACK on the saddle point. Returns the number of
+     * CG iterations (0 for UMFPACK).
+     */
+    unsigned int
+    linear_step(const Residual    &R,
+                const unsigned int iteration,
+                Vector<double>    &step);
+
+    /**
+     * Sets the multipliers of @p x to @p multipliers and its displacement
+     * to the one they load at load factor @p load (a linear step in which
+     * every face prescribes its traction).
+     */
+    void
+    predict(const std::vector<Tensor<1, dim>> &multipliers,
+            const double                       load,
+            Vector<double>                    &x);
 
     /** Newton on one load step; false if it did not converge. */
     bool
@@ -145,8 +196,13 @@ namespace PolyFrac
     Vector<double>       load_vector;
     double               load_norm;
 
+    /** The condensed Newton steps (Linear solver/Method = AMG). */
+    std::unique_ptr<FaceCondensation<dim>> condensation;
+
     Vector<double> solution, previous_step;
-    unsigned int   total_iterations = 0;
+    /** Multipliers to start from (start_from()); empty for a cold start. */
+    std::vector<Tensor<1, dim>> initial_multipliers;
+    unsigned int                total_iterations = 0;
     /** How often β was divided by 10 on active-set cycling. */
     unsigned int n_beta_reductions = 0;
   };

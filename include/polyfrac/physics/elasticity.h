@@ -134,10 +134,6 @@ namespace PolyFrac
                         Vector<double>                  &system_rhs,
                         const bool with_prescribed_traction) const;
 
-    /** CG preconditioned by ML AMG; returns the number of iterations. */
-    unsigned int
-    solve_amg();
-
     const Parameters           &prm;
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;

@@ -1,0 +1,66 @@
+#ifndef polyfrac_contact_saddle_point_h
+#define polyfrac_contact_saddle_point_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/discretization/local_reconstruction.h>
+#include <polyfrac/dofs/dof_map.h>
+
+#include <map>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The linearised contact conditions of one fracture face in its local
+   * frame Q (rows n, τ_1, ...): M_λ dλ̃ + M_j d[[u]]~ = −r, with λ̃ = Q λ,
+   * [[u]]~ = Q [[u]], and the face measure |σ|.
+   */
+  template <int dim>
+  struct FaceLinearisation
+  {
+    Tensor<2, dim> frame;
+    Tensor<2, dim> M_lambda;
+    Tensor<2, dim> M_jump;
+    Tensor<1, dim> r;
+    double         measure;
+  };
+
+  /**
+   * The pattern of the contact saddle-point system (u, λ): the cell blocks
+   * of the displacement, and for each fracture face the d × d multiplier
+   * block and its coupling to the dofs of [[u]]_σ (@p jumps).
+   */
+  template <int dim>
+  void
+  make_saddle_point_pattern(const MeshGeometry<dim>              &geometry,
+                            const DoFMap<dim>                    &dofs,
+                            const std::vector<BlockCoefficients> &jumps,
+                            SparsityPattern                      &pattern);
+
+  /**
+   * The generalised Jacobian of the contact saddle-point system: @p
+   * stiffness (A in its displacement block), the coupling columns
+   * |σ| [[v]]_σ and, per face, the rows −|σ|/β_σ Q^T (M_λ Q dλ + M_j Q
+   * d[[u]]), so that on a face in stick and contact the row block is the
+   * transpose of the coupling. The rows of the fixed dofs (@p dirichlet)
+   * become identity rows scaled like the diagonal of A.
+   */
+  template <int dim>
+  void
+  assemble_saddle_point_jacobian(
+    const SparseMatrix<double>                      &stiffness,
+    const std::vector<FaceLinearisation<dim>>       &faces,
+    const std::vector<double>                       &beta,
+    const std::vector<BlockCoefficients>            &jumps,
+    const DoFMap<dim>                               &dofs,
+    const std::map<types::global_dof_index, double> &dirichlet,
+    SparseMatrix<double>                            &jacobian);
+} // namespace PolyFrac
+
+#endif

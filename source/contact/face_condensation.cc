@@ -1,0 +1,361 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <polyfrac/contact/face_condensation.h>
+#include <polyfrac/physics/amg_solver.h>
+
+#include <cmath>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    /**
+     * E = −M_λ,TT^{-1} M_j,TT and e = −M_λ,TT^{-1} r_T on the traction rows
+     * @p rows of @p face (E is |T| × |T|, indexed by position in @p rows).
+     */
+    template <int dim>
+    std::pair<FullMatrix<double>, Vector<double>>
+    traction_response(const FaceLinearisation<dim>    &face,
+                      const std::vector<unsigned int> &rows)
+    {
+      const unsigned int n = rows.size();
+      FullMatrix<double> M_lambda(n, n), M_jump(n, n), E(n, n);
+      Vector<double>     r(n), e(n);
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          r(a) = face.r[rows[a]];
+          for (unsigned int b = 0; b < n; ++b)
+            {
+              M_lambda(a, b) = face.M_lambda[rows[a]][rows[b]];
+              M_jump(a, b)   = face.M_jump[rows[a]][rows[b]];
+            }
+        }
+      if (n > 0)
+        {
+          M_lambda.gauss_jordan();
+          M_lambda.mmult(E, M_jump);
+          E *= -1.;
+          M_lambda.vmult(e, r);
+          e *= -1.;
+        }
+      return {E, e};
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  FaceCondensation<dim>::FaceCondensation(
+    const SparseMatrix<double>                      &stiffness,
+    const DoFMap<dim>                               &dofs,
+    const std::vector<BlockCoefficients>            &jumps,
+    const std::map<types::global_dof_index, double> &dirichlet,
+    const std::vector<Point<dim>>                   &vertices,
+    const Parameters::SolverData                    &solver)
+    : stiffness(stiffness)
+    , dofs(dofs)
+    , jumps(jumps)
+    , dirichlet(dirichlet)
+    , vertices(vertices)
+    , solver(solver)
+    , free_nodal(dofs.n_displacement_dofs(), false)
+  {
+    for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
+      for (unsigned int c = 0; c < dim; ++c)
+        free_nodal[dofs.node_side_dof(n, c)] =
+          dirichlet.count(dofs.node_side_dof(n, c)) == 0;
+    for (unsigned int i = 0; i < jumps.size(); ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        AssertThrow(dirichlet.count(dofs.bubble_dof(i, c)) == 0,
+                    ExcMessage("Face condensation needs the bubbles "
+                               "(Contact/Bubbles = true)."));
+  }
+
+
+
+  template <int dim>
+  std::vector<bool>
+  FaceCondensation<dim>::kinematic_rows(const FaceLinearisation<dim> &face)
+  {
+    std::vector<bool> kinematic(dim);
+    for (unsigned int k = 0; k < dim; ++k)
+      kinematic[k] = face.M_lambda[k].norm() == 0.;
+    return kinematic;
+  }
+
+
+
+  template <int dim>
+  bool
+  FaceCondensation<dim>::condensable(
+    const std::vector<FaceLinearisation<dim>> &faces)
+  {
+    for (const auto &face : faces)
+      {
+        const std::vector<bool>   kinematic = kinematic_rows(face);
+        std::vector<unsigned int> traction;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            if (!kinematic[k])
+              {
+                traction.push_back(k);
+                continue;
+              }
+            // A kinematic row prescribes its own jump component only.
+            for (unsigned int c = 0; c < dim; ++c)
+              if ((c == k) == (face.M_jump[k][c] == 0.))
+                return false;
+          }
+        // Traction rows must not see kinematic components, and their
+        // response E must be symmetric.
+        for (const unsigned int t : traction)
+          for (unsigned int k = 0; k < dim; ++k)
+            if (kinematic[k] &&
+                (face.M_lambda[t][k] != 0. || face.M_jump[t][k] != 0.))
+              return false;
+        const FullMatrix<double> E = traction_response(face, traction).first;
+        for (unsigned int a = 0; a < E.m(); ++a)
+          for (unsigned int b = 0; b < a; ++b)
+            if (std::abs(E(a, b) - E(b, a)) >
+                1e-12 * (std::abs(E(a, b)) + std::abs(E(b, a))))
+              return false;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
+  double
+  FaceCondensation<dim>::bubble_weight(const unsigned int i) const
+  {
+    for (const auto &[block, w] : jumps[i])
+      if (dim * block == dofs.bubble_dof(i, 0))
+        return w;
+    Assert(false, ExcInternalError());
+    return 0;
+  }
+
+
+
+  template <int dim>
+  typename FaceCondensation<dim>::LocalRows
+  FaceCondensation<dim>::local_rows(const FaceLinearisation<dim> &face)
+  {
+    LocalRows rows;
+    rows.kinematic = kinematic_rows(face);
+    for (unsigned int k = 0; k < dim; ++k)
+      if (!rows.kinematic[k])
+        rows.traction.push_back(k);
+    std::tie(rows.E, rows.e) = traction_response(face, rows.traction);
+    rows.jump_variable.resize(dim, false);
+    for (unsigned int a = 0; a < rows.traction.size(); ++a)
+      for (unsigned int b = 0; b < rows.traction.size(); ++b)
+        if (rows.E(a, b) != 0.)
+          rows.jump_variable[rows.traction[a]] = true;
+    return rows;
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::make_elimination(
+    const std::vector<FaceLinearisation<dim>> &faces,
+    const std::vector<LocalRows>              &rows,
+    Vector<double>                            &offset)
+  {
+    const types::global_dof_index n_u = dofs.n_displacement_dofs();
+    offset.reinit(stiffness.m());
+
+    // The entries of Z: identity on free node-side dofs. On the bubble of
+    // face i, b = Q^T b̃, with, per local row k, b̃_k a reduced dof (stored
+    // at the bubble's dof k), or b̃_k = (d[[u]]~_k − (Q Σ w du)_k)/w_b,
+    // where d[[u]]~_k is prescribed (kinematic row, in z_0) or a reduced
+    // dof (jump variable).
+    std::vector<std::map<types::global_dof_index, double>> entries(n_u);
+    for (types::global_dof_index dof = 0; dof < n_u; ++dof)
+      if (free_nodal[dof])
+        entries[dof][dof] = 1.;
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        const auto  &Q   = faces[i].frame;
+        const double w_b = bubble_weight(i);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            auto &row = entries[dofs.bubble_dof(i, c)];
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                if (!rows[i].kinematic[k] && !rows[i].jump_variable[k])
+                  {
+                    row[dofs.bubble_dof(i, k)] += Q[k][c];
+                    continue;
+                  }
+                if (rows[i].kinematic[k])
+                  offset(dofs.bubble_dof(i, c)) +=
+                    Q[k][c] * (-faces[i].r[k] / faces[i].M_jump[k][k]) / w_b;
+                else
+                  row[dofs.bubble_dof(i, k)] += Q[k][c] / w_b;
+                for (const auto &[block, w] : jumps[i])
+                  if (dim * block != dofs.bubble_dof(i, 0))
+                    for (unsigned int e = 0; e < dim; ++e)
+                      if (free_nodal[dim * block + e])
+                        row[dim * block + e] -= Q[k][c] * Q[k][e] * w / w_b;
+              }
+          }
+      }
+
+    DynamicSparsityPattern dsp(stiffness.m(), n_u);
+    for (types::global_dof_index dof = 0; dof < n_u; ++dof)
+      for (const auto &[column, value] : entries[dof])
+        dsp.add(dof, column);
+    elimination_pattern.copy_from(dsp);
+    elimination.reinit(elimination_pattern);
+    for (types::global_dof_index dof = 0; dof < n_u; ++dof)
+      for (const auto &[column, value] : entries[dof])
+        elimination.set(dof, column, value);
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::make_reduced_operator(
+    const std::vector<FaceLinearisation<dim>> &faces,
+    const std::vector<LocalRows>              &rows)
+  {
+    const types::global_dof_index n_u = dofs.n_displacement_dofs();
+    product.reinit(product_pattern);
+    stiffness.mmult(product, elimination);
+    projected.reinit(projected_pattern);
+    elimination.Tmmult(projected, product);
+
+    // The reduced dofs: free node sides, bubble components and jump
+    // variables; the others (fixed, prescribed jumps) get a unit row.
+    std::vector<bool> reduced_dof(free_nodal);
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      for (const unsigned int t : rows[i].traction)
+        reduced_dof[dofs.bubble_dof(i, t)] = true;
+
+    DynamicSparsityPattern dsp(n_u);
+    for (types::global_dof_index row = 0; row < n_u; ++row)
+      {
+        dsp.add(row, row);
+        for (auto entry = projected.begin(row); entry != projected.end(row);
+             ++entry)
+          dsp.add(row, entry->column());
+      }
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      for (const unsigned int a : rows[i].traction)
+        for (const unsigned int b : rows[i].traction)
+          dsp.add(dofs.bubble_dof(i, a), dofs.bubble_dof(i, b));
+    reduced_pattern.copy_from(dsp);
+    reduced.reinit(reduced_pattern);
+    double diagonal_scale = 0;
+    for (types::global_dof_index row = 0; row < n_u; ++row)
+      {
+        for (auto entry = projected.begin(row); entry != projected.end(row);
+             ++entry)
+          reduced.add(row, entry->column(), entry->value());
+        diagonal_scale += std::abs(projected.el(row, row)) / n_u;
+      }
+    for (types::global_dof_index row = 0; row < n_u; ++row)
+      if (!reduced_dof[row])
+        reduced.set(row, row, diagonal_scale);
+
+    // Σ |σ| E on the jump variables.
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        const auto &T = rows[i].traction;
+        for (unsigned int a = 0; a < T.size(); ++a)
+          for (unsigned int b = 0; b < T.size(); ++b)
+            if (rows[i].E(a, b) != 0.)
+              reduced.add(dofs.bubble_dof(i, T[a]),
+                          dofs.bubble_dof(i, T[b]),
+                          faces[i].measure * rows[i].E(a, b));
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FaceCondensation<dim>::solve(const std::vector<FaceLinearisation<dim>> &faces,
+                               const Vector<double> &residual,
+                               Vector<double>       &step)
+  {
+    Assert(condensable(faces), ExcInternalError());
+    const types::global_dof_index n_u = dofs.n_displacement_dofs();
+
+    std::vector<LocalRows> rows;
+    for (const auto &face : faces)
+      rows.push_back(local_rows(face));
+    Vector<double> offset;
+    make_elimination(faces, rows, offset);
+    make_reduced_operator(faces, rows);
+
+    // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
+    // traction the open, free and slip rows prescribe.
+    Vector<double> shifted(residual.size()), rhs(n_u);
+    stiffness.vmult(shifted, offset);
+    shifted += residual;
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        Tensor<1, dim> e;
+        for (unsigned int a = 0; a < rows[i].traction.size(); ++a)
+          e[rows[i].traction[a]] = rows[i].e(a);
+        const Tensor<1, dim> load = transpose(faces[i].frame) * e;
+        for (const auto &[block, w] : jumps[i])
+          for (unsigned int c = 0; c < dim; ++c)
+            shifted(dim * block + c) += faces[i].measure * w * load[c];
+      }
+    elimination.Tvmult(rhs, shifted);
+    rhs *= -1.;
+
+    TrilinosWrappers::SparseMatrix matrix;
+    matrix.reinit(reduced);
+    Vector<double>     y(n_u);
+    const unsigned int iterations =
+      solve_cg_amg(matrix, y, rhs, dofs, vertices, solver);
+
+    // du = Z y + z_0; the traction multipliers dλ̃_T = E d[[u]]~_T + e, the
+    // kinematic ones from the bubble rows |σ| w_b dλ = −(R + A du)_b.
+    step.reinit(residual.size());
+    elimination.vmult(step, y);
+    step += offset;
+    Vector<double> A_step(residual.size());
+    stiffness.vmult(A_step, step);
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        const auto    &Q   = faces[i].frame;
+        const auto    &T   = rows[i].traction;
+        const double   w_b = bubble_weight(i);
+        Tensor<1, dim> reaction;
+        for (unsigned int c = 0; c < dim; ++c)
+          reaction[c] =
+            -(residual(dofs.bubble_dof(i, c)) + A_step(dofs.bubble_dof(i, c))) /
+            (faces[i].measure * w_b);
+        Tensor<1, dim> multiplier = Q * reaction;
+        for (unsigned int a = 0; a < T.size(); ++a)
+          {
+            multiplier[T[a]] = rows[i].e(a);
+            for (unsigned int b = 0; b < T.size(); ++b)
+              if (rows[i].E(a, b) != 0.)
+                multiplier[T[a]] +=
+                  rows[i].E(a, b) * y(dofs.bubble_dof(i, T[b]));
+          }
+        const Tensor<1, dim> global = transpose(Q) * multiplier;
+        for (unsigned int c = 0; c < dim; ++c)
+          step(dofs.multiplier_dof(i, c)) = global[c];
+      }
+    return iterations;
+  }
+
+
+
+  template class FaceCondensation<2>;
+  template class FaceCondensation<3>;
+} // namespace PolyFrac

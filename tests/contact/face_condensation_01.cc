@@ -1,0 +1,184 @@
+// Checks that a Newton step condensed face by face (FaceCondensation: the
+// multipliers eliminated through the bubbles, AMG-preconditioned CG on what
+// remains) equals the step UMFPACK computes on the saddle-point Jacobian,
+// for faces in every state: open, stick and contact, slip and contact
+// (Tresca: in 3D the slip direction gives E ≠ 0), frictionless contact; on
+// two crossing fractures in 2D and 3D. A Coulomb face slipping in contact
+// couples λ_τ to the normal reaction and must be refused.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <polyfrac/app/simulator.h>
+#include <polyfrac/contact/face_condensation.h>
+#include <polyfrac/physics/elasticity.h>
+
+#include "../tests.h"
+
+using namespace PolyFrac;
+
+/** The linearised conditions of fracture face @p i in state @p state. */
+template <int dim>
+FaceLinearisation<dim>
+linearisation(const FractureNetwork<dim> &network,
+              const MeshGeometry<dim>    &geometry,
+              const unsigned int          i,
+              const unsigned int          state,
+              const double                beta)
+{
+  FaceLinearisation<dim> face;
+  face.frame   = network.frame(i);
+  face.measure = geometry.faces[network.fracture_faces[i].face].measure;
+  for (unsigned int d = 0; d < dim; ++d)
+    face.r[d] = std::sin(1. + 3. * i + d);
+
+  const auto identity = [&](Tensor<2, dim> &M, const double value) {
+    for (unsigned int d = 0; d < dim; ++d)
+      M[d][d] = value;
+  };
+  if (state == 0) // open
+    identity(face.M_lambda, 1.);
+  else if (state == 1) // stick and contact
+    identity(face.M_jump, -beta);
+  else
+    {
+      // Contact, and slip (Tresca, p = g/|b_τ| = 0.7, direction b̂) or no
+      // friction.
+      face.M_jump[0][0] = -beta;
+      Tensor<1, dim> hat;
+      for (unsigned int d = 1; d < dim; ++d)
+        hat[d] = std::cos(2. * i + d);
+      hat /= hat.norm();
+      const double p = state == 2 ? 0.7 : 0.;
+      for (unsigned int d = 1; d < dim; ++d)
+        for (unsigned int e = 1; e < dim; ++e)
+          {
+            const double P      = p * ((d == e ? 1. : 0.) - hat[d] * hat[e]);
+            face.M_lambda[d][e] = (d == e ? 1. : 0.) - P;
+            face.M_jump[d][e]   = -beta * P;
+          }
+    }
+  return face;
+}
+
+
+
+template <int dim>
+void
+check(const unsigned int subdivisions)
+{
+  Parameters prm = Testing::default_parameters(dim, subdivisions);
+  if (dim == 2)
+    prm.fractures.geometries = {{Point<3>(-1, 0, 0), Point<3>(1, 0, 0)},
+                                {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
+  else
+    prm.fractures.geometries = {{Point<3>(0, -1, -1),
+                                 Point<3>(0, 1, -1),
+                                 Point<3>(0, 1, 1),
+                                 Point<3>(0, -1, 1)},
+                                {Point<3>(-1, 0, -1),
+                                 Point<3>(1, 0, -1),
+                                 Point<3>(1, 0, 1),
+                                 Point<3>(-1, 0, 1)}};
+  prm.solver.tolerance = 1e-14;
+  const LevelDiscretization<dim> level(prm, 0);
+  const auto                    &geometry = *level.geometry;
+  const auto                    &network  = *level.network;
+  const auto                    &dofs     = *level.dofs;
+
+  // The saddle-point system of ContactMechanics, built from its pieces.
+  Elasticity<dim> elasticity(prm, geometry, network, dofs);
+  elasticity.make_constraints();
+  std::map<types::global_dof_index, double> dirichlet;
+  for (const auto &line : elasticity.get_constraints().get_lines())
+    dirichlet[line.index] = 0;
+  const unsigned int             n_faces = network.n_fracture_faces();
+  std::vector<BlockCoefficients> jumps;
+  for (unsigned int i = 0; i < n_faces; ++i)
+    jumps.push_back(jump(geometry, dofs, network, i));
+  SparsityPattern pattern;
+  make_saddle_point_pattern(geometry, dofs, jumps, pattern);
+  SparseMatrix<double> stiffness(pattern);
+  Vector<double>       load(pattern.n_rows());
+  elasticity.assemble_operator(stiffness, load);
+
+  const double                        beta = 10.;
+  std::vector<FaceLinearisation<dim>> faces;
+  std::vector<unsigned int>           count(4);
+  for (unsigned int i = 0; i < n_faces; ++i)
+    {
+      faces.push_back(linearisation(network, geometry, i, i % 4, beta));
+      ++count[i % 4];
+    }
+
+  // A residual: arbitrary momentum rows, contact rows −|σ|/β Q^T r.
+  Vector<double> residual(pattern.n_rows());
+  for (types::global_dof_index k = 0; k < dofs.n_displacement_dofs(); ++k)
+    residual(k) = dirichlet.count(k) ? 0. : std::cos(0.37 * k);
+  for (unsigned int i = 0; i < n_faces; ++i)
+    {
+      const Tensor<1, dim> r = transpose(faces[i].frame) * faces[i].r;
+      for (unsigned int d = 0; d < dim; ++d)
+        residual(dofs.multiplier_dof(i, d)) = -faces[i].measure / beta * r[d];
+    }
+
+  SparseMatrix<double> jacobian(pattern);
+  assemble_saddle_point_jacobian(stiffness,
+                                 faces,
+                                 std::vector<double>(n_faces, beta),
+                                 jumps,
+                                 dofs,
+                                 dirichlet,
+                                 jacobian);
+  Vector<double> direct_step(residual), condensed_step;
+  direct_step *= -1.;
+  SparseDirectUMFPACK direct;
+  direct.solve(jacobian, direct_step);
+
+  FaceCondensation<dim> condensation(
+    stiffness, dofs, jumps, dirichlet, geometry.mesh.vertices, prm.solver);
+  const bool condensable = FaceCondensation<dim>::condensable(faces);
+  condensation.solve(faces, residual, condensed_step);
+
+  double u_error = 0, u_norm = 0, lambda_error = 0, lambda_norm = 0;
+  for (types::global_dof_index k = 0; k < residual.size(); ++k)
+    {
+      const bool   is_u  = k < dofs.n_displacement_dofs();
+      const double error = std::abs(condensed_step(k) - direct_step(k));
+      (is_u ? u_error : lambda_error) =
+        std::max(is_u ? u_error : lambda_error, error);
+      (is_u ? u_norm : lambda_norm) =
+        std::max(is_u ? u_norm : lambda_norm, std::abs(direct_step(k)));
+    }
+
+  // Coulomb slip in contact: λ_τ depends on the normal reaction.
+  faces[2].M_lambda[1][0]        = -0.5;
+  const bool coulomb_condensable = FaceCondensation<dim>::condensable(faces);
+
+  std::cout << dim << "D, " << n_faces << " fracture faces: " << count[0]
+            << " open, " << count[1] << " stick, " << count[2]
+            << " Tresca slip, " << count[3] << " frictionless contact"
+            << std::endl
+            << "  condensable: " << (condensable ? "yes" : "no")
+            << "; with a Coulomb slip face: "
+            << (coulomb_condensable ? "yes" : "no")
+            << std::endl
+            // CG stops at a relative residual of 1e-14; the step inherits
+            // it times the condition number of the reduced operator.
+            << "  |du_condensed - du_saddle| / |du|: "
+            << Testing::round_off(u_error / u_norm, 1e-9) << std::endl
+            << "  |dlambda_condensed - dlambda_saddle| / |dlambda|: "
+            << Testing::round_off(lambda_error / lambda_norm, 1e-9)
+            << std::endl;
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  // Trilinos (ML) needs MPI.
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check<2>(8);
+  check<3>(4);
+}
