@@ -376,10 +376,11 @@ namespace PolyFrac
       "Initial guess",
       "previous level",
       Patterns::Selection("previous level|zero"),
-      "previous level: on levels after the first, Newton starts from the "
-      "multipliers of the previous level (nearest face centroid on the same "
-      "fracture) and the displacement they load, one elasticity solve "
-      "(nested iteration). zero: every level starts from u = 0, λ = 0.");
+      "previous level: on levels after the first, with one load step, "
+      "Newton starts with one primal-dual active set step on the contact "
+      "states of the previous level (those of the nearest face centroid on "
+      "the same fracture; its multipliers give the slip directions): nested "
+      "iteration. zero: every level starts from u = 0, λ = 0.");
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");

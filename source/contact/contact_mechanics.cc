@@ -127,7 +127,8 @@ namespace PolyFrac
   template <int dim>
   typename ContactMechanics<dim>::Residual
   ContactMechanics<dim>::residual(const Vector<double> &x,
-                                  const double          load) const
+                                  const double          load,
+                                  const ContactStates  *forced) const
   {
     const unsigned int n_faces = network.n_fracture_faces();
     Residual           R;
@@ -157,11 +158,12 @@ namespace PolyFrac
         Tensor<1, dim> b_t;
         for (unsigned int d = 1; d < dim; ++d)
           b_t[d] = lambda[d] + b * (j[d] - j_old[d]);
-        const double b_t_norm   = b_t.norm();
-        const bool   in_contact = b_n > 0;
-        const double g          = friction_law == "Coulomb" ?
-                                    friction_coefficient * std::max(b_n, 0.) :
-                                    threshold[i];
+        const double b_t_norm = b_t.norm();
+        const bool   in_contact =
+          forced ? forced->normal[i] == NormalState::contact : b_n > 0;
+        const double g = friction_law == "Coulomb" ?
+                           friction_coefficient * std::max(b_n, 0.) :
+                           threshold[i];
 
         // Local residual r = λ − (projections) and its generalised
         // derivatives M_λ = ∂r/∂λ, M_j = ∂r/∂[[u]] (local components).
@@ -192,7 +194,8 @@ namespace PolyFrac
                 M_lambda[d][d] = 1;
               }
           }
-        else if (b_t_norm <= g)
+        else if (forced ? forced->tangential[i] == TangentialState::stick :
+                          b_t_norm <= g)
           {
             R.tangential[i] = TangentialState::stick;
             for (unsigned int d = 1; d < dim; ++d)
@@ -203,16 +206,28 @@ namespace PolyFrac
           }
         else
           {
-            // λ_τ = g b_τ/|b_τ|: dP = (g/|b_τ|)(I − b̂ b̂^T) db_τ + b̂ dg.
-            R.tangential[i]          = TangentialState::slip;
-            const Tensor<1, dim> hat = b_t / b_t_norm;
+            // λ_τ = g b_τ/|b_τ|: dP = (g/|b_τ|)(I − b̂ b̂^T) db_τ + b̂ dg. A
+            // forced slip keeps the direction b̂ (P = 0): b_τ may then be
+            // shorter than g.
+            R.tangential[i] = TangentialState::slip;
+            Tensor<1, dim> hat;
+            hat[dim - 1]             = 1;
+            Tensor<1, dim> direction = b_t;
+            if (b_t_norm == 0)
+              {
+                direction    = lambda;
+                direction[0] = 0;
+              }
+            if (direction.norm() > 0)
+              hat = direction / direction.norm();
+            const double slope = forced ? 0. : g / b_t_norm;
             for (unsigned int d = 1; d < dim; ++d)
               {
                 r[d] = lambda[d] - g * hat[d];
                 for (unsigned int e = 1; e < dim; ++e)
                   {
                     const double P =
-                      (g / b_t_norm) * ((d == e ? 1. : 0.) - hat[d] * hat[e]);
+                      slope * ((d == e ? 1. : 0.) - hat[d] * hat[e]);
                     M_lambda[d][e] = (d == e ? 1. : 0.) - P;
                     M_jump[d][e]   = -b * P;
                   }
@@ -301,21 +316,25 @@ namespace PolyFrac
   void
   ContactMechanics<dim>::start_from(const MultiplierField<dim> &coarse)
   {
-    initial_multipliers.clear();
-    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+    const unsigned int n_faces = network.n_fracture_faces();
+    initial_guess.emplace();
+    initial_guess->values.resize(n_faces);
+    initial_guess->states.normal.resize(n_faces);
+    initial_guess->states.tangential.resize(n_faces);
+    for (unsigned int i = 0; i < n_faces; ++i)
       {
         const auto       &face    = network.fracture_faces[i];
         const Point<dim> &x       = geometry.faces[face.face].centroid;
         double            nearest = std::numeric_limits<double>::max();
-        Tensor<1, dim>    value;
         for (unsigned int k = 0; k < coarse.values.size(); ++k)
           if (coarse.fracture[k] == face.fracture &&
               x.distance_square(coarse.centroids[k]) < nearest)
             {
-              nearest = x.distance_square(coarse.centroids[k]);
-              value   = coarse.values[k];
+              nearest                  = x.distance_square(coarse.centroids[k]);
+              initial_guess->values[i] = coarse.values[k];
+              initial_guess->states.normal[i]     = coarse.states.normal[k];
+              initial_guess->states.tangential[i] = coarse.states.tangential[k];
             }
-        initial_multipliers.push_back(value);
       }
   }
 
@@ -333,6 +352,8 @@ namespace PolyFrac
         field.centroids.push_back(geometry.faces[face.face].centroid);
         field.values.push_back(face_multiplier(solution, i));
       }
+    field.states.normal     = normal_state;
+    field.states.tangential = tangential_state;
     return field;
   }
 
@@ -340,29 +361,18 @@ namespace PolyFrac
 
   template <int dim>
   void
-  ContactMechanics<dim>::predict(const std::vector<Tensor<1, dim>> &multipliers,
-                                 const double                       load,
-                                 Vector<double>                    &x)
+  ContactMechanics<dim>::predict(const MultiplierField<dim> &start,
+                                 const double                load,
+                                 Vector<double>             &x)
   {
     for (const auto &[dof, value] : dirichlet)
       x(dof) = load * value;
-    for (unsigned int i = 0; i < multipliers.size(); ++i)
+    for (unsigned int i = 0; i < start.values.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
-        x(dofs.multiplier_dof(i, d)) = load * multipliers[i][d];
+        x(dofs.multiplier_dof(i, d)) = load * start.values[i][d];
 
-    // Every face prescribes its multiplier: M_λ = I, M_j = 0, r = 0.
-    Residual R = residual(x, load);
-    for (auto &face : R.faces)
-      {
-        face.M_lambda = Tensor<2, dim>();
-        face.M_jump   = Tensor<2, dim>();
-        face.r        = Tensor<1, dim>();
-        for (unsigned int d = 0; d < dim; ++d)
-          face.M_lambda[d][d] = 1;
-      }
-    for (unsigned int i = 0; i < multipliers.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        R.vector(dofs.multiplier_dof(i, d)) = 0;
+    // One linearised step with the given states.
+    const Residual R = residual(x, load, &start.states);
     Vector<double> step;
     linear_step(R, 0, step);
     x += step;
@@ -482,12 +492,13 @@ namespace PolyFrac
             Vector<double> x    = solution;
             if (n_steps > 1 || load < 1)
               out << " Load step to " << load << std::endl;
-            if (reached == 0 && !initial_multipliers.empty())
+            // The previous level's states are those of the full load: a
+            // start only for a first step to the full load.
+            if (reached == 0 && load == 1 && initial_guess)
               {
-                out << "  Start: the previous level's multipliers and the "
-                       "displacement they load"
+                out << "  Start: one step on the previous level's states"
                     << std::endl;
-                predict(initial_multipliers, load, x);
+                predict(*initial_guess, load, x);
               }
             if (newton(load, x, out))
               {

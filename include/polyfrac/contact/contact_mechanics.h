@@ -11,6 +11,7 @@
 #include <polyfrac/physics/elasticity.h>
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -34,9 +35,17 @@ namespace PolyFrac
     free
   };
 
+  /** The contact states of the fracture faces. */
+  struct ContactStates
+  {
+    std::vector<NormalState>     normal;
+    std::vector<TangentialState> tangential;
+  };
+
   /**
-   * The multipliers of a converged level, face by face, with the fracture
-   * and centroid of each face: the start of Newton on the next level.
+   * The multipliers and states of a converged level, face by face, with the
+   * fracture and centroid of each face: the start of Newton on the next
+   * level.
    */
   template <int dim>
   struct MultiplierField
@@ -44,6 +53,7 @@ namespace PolyFrac
     std::vector<unsigned int>   fracture;
     std::vector<Point<dim>>     centroids;
     std::vector<Tensor<1, dim>> values;
+    ContactStates               states;
   };
 
   /**
@@ -73,14 +83,19 @@ namespace PolyFrac
    * converge is cut in halves; when everything fails, the solver stops with
    * an error that says what it tried.
    *
-   * Nested iteration: given the multipliers of a coarser level
-   * (start_from()), the first load step starts from them (each face takes
-   * the value of the nearest coarse face centroid on its fracture) and
-   * from the displacement they load, one elasticity solve that counts as a
-   * Newton iteration. The active sets then start next to the converged
-   * ones, so the number of iterations stays bounded under refinement,
-   * where a cold start moves a stick/slip front by a few faces per
-   * iteration.
+   * Linear solves: UMFPACK on the saddle-point Jacobian (Linear
+   * solver/Method = direct), or, with Method = AMG, the step condensed face
+   * by face (FaceCondensation: no multiplier unknowns, symmetric positive
+   * definite) and solved by CG + AMG; a Coulomb step in which a face slips
+   * in contact cannot be condensed and falls back to UMFPACK.
+   *
+   * Nested iteration: given the multipliers and states of a coarser level
+   * (start_from()), each face takes those of the nearest coarse face
+   * centroid on its fracture, and a first load step to the full load
+   * (one load step, not cut) starts with one primal-dual active set step
+   * on these states (it counts as a Newton iteration). The active sets then
+   * start next to the converged ones, where a cold start moves a stick/slip
+   * front by a few faces per iteration.
    */
   template <int dim>
   class ContactMechanics
@@ -147,8 +162,14 @@ namespace PolyFrac
       std::vector<TangentialState>        tangential;
       std::vector<FaceLinearisation<dim>> faces;
     };
+    /**
+     * With @p forced, the faces take the given states instead of those
+     * of b_n, b_τ (a slip then keeps its direction: P = 0).
+     */
     Residual
-    residual(const Vector<double> &x, const double load) const;
+    residual(const Vector<double> &x,
+             const double          load,
+             const ContactStates  *forced = nullptr) const;
 
     /**
      * The Newton step for @p R: condensed face by face and solved by
@@ -162,14 +183,14 @@ namespace PolyFrac
                 Vector<double>    &step);
 
     /**
-     * Sets the multipliers of @p x to @p multipliers and its displacement
-     * to the one they load at load factor @p load (a linear step in which
-     * every face prescribes its traction).
+     * The primal-dual active set step with the states of @p start: from
+     * its multipliers (scaled by @p load, which fix the slip directions),
+     * one linearised step in which each face keeps its given state.
      */
     void
-    predict(const std::vector<Tensor<1, dim>> &multipliers,
-            const double                       load,
-            Vector<double>                    &x);
+    predict(const MultiplierField<dim> &start,
+            const double                load,
+            Vector<double>             &x);
 
     /** Newton on one load step; false if it did not converge. */
     bool
@@ -200,9 +221,9 @@ namespace PolyFrac
     std::unique_ptr<FaceCondensation<dim>> condensation;
 
     Vector<double> solution, previous_step;
-    /** Multipliers to start from (start_from()); empty for a cold start. */
-    std::vector<Tensor<1, dim>> initial_multipliers;
-    unsigned int                total_iterations = 0;
+    /** Multipliers and states to start from (start_from()). */
+    std::optional<MultiplierField<dim>> initial_guess;
+    unsigned int                        total_iterations = 0;
     /** How often β was divided by 10 on active-set cycling. */
     unsigned int n_beta_reductions = 0;
   };
