@@ -50,9 +50,9 @@ for scene in $scenes; do
   run $scene-local-refinement $scene.prm "$base" "Mesh/Local refinements=1"
   run $scene-agglomerated $scene.prm "$base" "Mesh/Cells per polytope=4"
   else
-  # On a 2^3 base every cell centre lies in the default box: refine the
-  # + side below z = 0 instead.
-  box="Mesh/Local refinement box=0, -1, -1 : 1, 1, 0"
+  # B2 with contact: refine the layer of cells on the + side of the stick
+  # half of the fracture (x < 0.25, z < 0) once.
+  box="Mesh/Local refinement box=0, -1, -1 : 0.25, 1, 0"
   [ "$scene" = b2-3d-tresca ] || box="Mesh/Local refinement box=-0.5, -0.5, -0.5 : 0.5, 0.5, 0.5"
   solver="Linear solver/Method=direct"
   [ "$scene" = b2-3d-tresca ] && solver="Linear solver/Method=AMG"

@@ -20,6 +20,27 @@ namespace PolyFrac::Testing
     return prm;
   }
 
+  /**
+   * Two fractures crossing the whole box (-1, 1)^dim through the origin:
+   * the planes x_0 = 0 and x_1 = 0 (2D: segments, 3D: squares).
+   */
+  inline void
+  add_crossing_fractures(Parameters &prm, const unsigned int dim)
+  {
+    if (dim == 2)
+      prm.fractures.geometries = {{Point<3>(-1, 0, 0), Point<3>(1, 0, 0)},
+                                  {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
+    else
+      prm.fractures.geometries = {{Point<3>(0, -1, -1),
+                                   Point<3>(0, 1, -1),
+                                   Point<3>(0, 1, 1),
+                                   Point<3>(0, -1, 1)},
+                                  {Point<3>(-1, 0, -1),
+                                   Point<3>(1, 0, -1),
+                                   Point<3>(1, 0, 1),
+                                   Point<3>(-1, 0, 1)}};
+  }
+
   /** Prints @p value as "0" below @p tol (round-off), else 3 digits. */
   inline std::string
   round_off(const double value, const double tol = 1e-12)

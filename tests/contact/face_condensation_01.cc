@@ -68,18 +68,7 @@ void
 check(const unsigned int subdivisions)
 {
   Parameters prm = Testing::default_parameters(dim, subdivisions);
-  if (dim == 2)
-    prm.fractures.geometries = {{Point<3>(-1, 0, 0), Point<3>(1, 0, 0)},
-                                {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
-  else
-    prm.fractures.geometries = {{Point<3>(0, -1, -1),
-                                 Point<3>(0, 1, -1),
-                                 Point<3>(0, 1, 1),
-                                 Point<3>(0, -1, 1)},
-                                {Point<3>(-1, 0, -1),
-                                 Point<3>(1, 0, -1),
-                                 Point<3>(1, 0, 1),
-                                 Point<3>(-1, 0, 1)}};
+  Testing::add_crossing_fractures(prm, dim);
   prm.solver.tolerance = 1e-14;
   const LevelDiscretization<dim> level(prm, 0);
   const auto                    &geometry = *level.geometry;

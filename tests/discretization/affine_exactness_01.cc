@@ -60,18 +60,7 @@ void
 check(const std::string &name, const std::function<void(Parameters &)> &setup)
 {
   Parameters prm = Testing::default_parameters(dim, 4);
-  if (dim == 2)
-    prm.fractures.geometries = {{Point<3>(-1, 0, 0), Point<3>(1, 0, 0)},
-                                {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
-  else
-    prm.fractures.geometries = {{Point<3>(0, -1, -1),
-                                 Point<3>(0, 1, -1),
-                                 Point<3>(0, 1, 1),
-                                 Point<3>(0, -1, 1)},
-                                {Point<3>(-1, 0, -1),
-                                 Point<3>(1, 0, -1),
-                                 Point<3>(1, 0, 1),
-                                 Point<3>(-1, 0, 1)}};
+  Testing::add_crossing_fractures(prm, dim);
   setup(prm);
   const LevelDiscretization<dim> level(prm, 0);
   const auto                    &geometry = *level.geometry;
