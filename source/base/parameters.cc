@@ -725,7 +725,14 @@ namespace PolyFrac
         warn_if_set("Exact solution", "Contact traction");
       }
     else
-      warn_if_set("Fractures", "Traction");
+      {
+        warn_if_set("Fractures", "Traction");
+        if (!contact.bubbles && solver.method == "AMG")
+          warnings.push_back(
+            "Linear solver/Method = AMG condenses the contact Newton steps "
+            "through the bubbles; with Contact/Bubbles = false every step "
+            "uses UMFPACK on the saddle point");
+      }
   }
 
 

@@ -274,7 +274,7 @@ namespace PolyFrac
 
 
   template <int dim>
-  unsigned int
+  std::optional<unsigned int>
   ContactMechanics<dim>::linear_step(const Residual    &R,
                                      const unsigned int iteration,
                                      Vector<double>    &step)
@@ -307,7 +307,7 @@ namespace PolyFrac
                                "Use Bubbles = true."));
       }
     direct.vmult(step, rhs);
-    return 0;
+    return {};
   }
 
 
@@ -448,10 +448,15 @@ namespace PolyFrac
             continue;
           }
 
-        Vector<double>     step;
-        const unsigned int cg_iterations = linear_step(R, it, step);
-        if (cg_iterations > 0)
-          out << "    condensed step: " << cg_iterations << " CG iterations"
+        Vector<double>                    step;
+        const std::optional<unsigned int> cg_iterations =
+          linear_step(R, it, step);
+        if (cg_iterations)
+          out << "    condensed step: " << *cg_iterations << " CG iterations"
+              << std::endl;
+        else if (condensation)
+          out << "    saddle-point step (UMFPACK): a Coulomb face slips in "
+                 "contact, its λ_τ = F λ_n needs the normal multiplier"
               << std::endl;
 
         double alpha = 1;

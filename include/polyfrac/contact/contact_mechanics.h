@@ -175,9 +175,9 @@ namespace PolyFrac
      * The Newton step for @p R: condensed face by face and solved by
      * AMG-preconditioned CG (Linear solver/Method = AMG, when every face
      * allows it), else UMFPACK on the saddle point. Returns the number of
-     * CG iterations (0 for UMFPACK).
+     * CG iterations of a condensed step.
      */
-    unsigned int
+    std::optional<unsigned int>
     linear_step(const Residual    &R,
                 const unsigned int iteration,
                 Vector<double>    &step);
