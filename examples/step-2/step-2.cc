@@ -1018,5 +1018,18 @@ main(int argc, char **argv)
  * step from ContactMechanics. Finally, the bubble's stability could be
  * shown more directly by computing the smallest singular value of the
  * coupling block, as a function of h, with and without bubbles.
+ *
+ * The bubble also opens a way out of the saddle point for large meshes.
+ * Each face owns one bubble, whose coefficient in [[u]]_σ is nonzero, so a
+ * Newton step can eliminate the multipliers face by face: where the state
+ * prescribes the jump (contact, stick), the bubble component becomes a
+ * function of the node sides; where it prescribes the traction (open,
+ * free, slip), the traction loads the face. What is left is symmetric
+ * positive definite, with the sparsity of the elasticity matrix, and CG
+ * with the elasticity AMG solves it; the multipliers come back from the
+ * bubble rows. The library does this with `--set "Linear solver/Method=
+ * AMG"` (class FaceCondensation); writing it here, for the 2D states of
+ * this program, and checking the step against UMFPACK on the saddle point
+ * is a good exercise.
  */
 // clang-format on
