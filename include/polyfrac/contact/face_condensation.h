@@ -33,11 +33,17 @@ namespace PolyFrac
    * du)_k)/w_b, and the test space keeps only motions with no kinematic
    * jump, so λ̃_k drops out (a null-space method). The other rows give the
    * traction: dλ̃_T = E d[[u]]~_T + e with E = −M_λ,TT^{-1} M_j,TT
-   * (0 on open and free faces; (I − P)^{-1} β P on 3D Tresca slip faces,
-   * symmetric positive semi-definite), which adds Σ_σ |σ| E to the
-   * operator. What remains is
+   * and e = −M_λ,TT^{-1} r_T. E vanishes on open, free and 2D slip rows,
+   * where b̃_t stays the unknown and e is a load. On 3D Tresca slip faces
+   * E = (I − P)^{-1} β P is symmetric positive semi-definite with the
+   * stiffness g/|[[u]]_τ| against a change of slip direction, huge where
+   * the slip is small; there the jump component d[[u]]~_t itself replaces
+   * b̃_t as unknown (b̃_t = (d[[u]]~_t − (Q Σ w du)_t)/w_b), so that
+   * Σ_σ |σ| E sits on diagonal blocks, which CG + AMG tolerate far better
+   * than the same stiffness spread over the face's node sides. What
+   * remains is
    *
-   *   Z^T A Z + Σ_σ |σ| L_T^T E L_T,
+   *   Z^T A Z + Σ_σ |σ| E (on the jump unknowns),
    *
    * symmetric positive definite for frictionless and Tresca contact: no
    * multiplier unknowns, one row per displacement dof (eliminated dofs
