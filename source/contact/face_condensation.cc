@@ -225,13 +225,20 @@ namespace PolyFrac
   void
   FaceCondensation<dim>::make_reduced_operator(
     const std::vector<FaceLinearisation<dim>> &faces,
-    const std::vector<LocalRows>              &rows)
+    const std::vector<LocalRows>              &rows,
+    TrilinosWrappers::SparseMatrix            &matrix) const
   {
+    // Each intermediate matrix is freed as soon as the next one is built,
+    // which keeps at most two of them alive.
     const types::global_dof_index n_u = dofs.n_displacement_dofs();
-    product.reinit(product_pattern);
-    stiffness.mmult(product, elimination);
-    projected.reinit(projected_pattern);
-    elimination.Tmmult(projected, product);
+    SparsityPattern               projected_pattern;
+    SparseMatrix<double>          projected(projected_pattern);
+    {
+      SparsityPattern      product_pattern;
+      SparseMatrix<double> product(product_pattern);
+      stiffness.mmult(product, elimination);
+      elimination.Tmmult(projected, product);
+    }
 
     // The reduced dofs: free node sides, bubble components and jump
     // variables; the others (fixed, prescribed jumps) get a unit row.
@@ -252,9 +259,11 @@ namespace PolyFrac
       for (const unsigned int a : rows[i].traction)
         for (const unsigned int b : rows[i].traction)
           dsp.add(dofs.bubble_dof(i, a), dofs.bubble_dof(i, b));
+    SparsityPattern reduced_pattern;
     reduced_pattern.copy_from(dsp);
-    reduced.reinit(reduced_pattern);
-    double diagonal_scale = 0;
+    dsp.reinit(0, 0);
+    SparseMatrix<double> reduced(reduced_pattern);
+    double               diagonal_scale = 0;
     for (types::global_dof_index row = 0; row < n_u; ++row)
       {
         for (auto entry = projected.begin(row); entry != projected.end(row);
@@ -262,6 +271,8 @@ namespace PolyFrac
           reduced.add(row, entry->column(), entry->value());
         diagonal_scale += std::abs(projected.el(row, row)) / n_u;
       }
+    projected.clear();
+    projected_pattern.reinit(0, 0, 0);
     for (types::global_dof_index row = 0; row < n_u; ++row)
       if (!reduced_dof[row])
         reduced.set(row, row, diagonal_scale);
@@ -277,6 +288,7 @@ namespace PolyFrac
                           dofs.bubble_dof(i, T[b]),
                           faces[i].measure * rows[i].E(a, b));
       }
+    matrix.reinit(reduced);
   }
 
 
@@ -295,7 +307,8 @@ namespace PolyFrac
       rows.push_back(local_rows(face));
     Vector<double> offset;
     make_elimination(faces, rows, offset);
-    make_reduced_operator(faces, rows);
+    TrilinosWrappers::SparseMatrix matrix;
+    make_reduced_operator(faces, rows, matrix);
 
     // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
     // traction the open, free and slip rows prescribe.
@@ -315,8 +328,6 @@ namespace PolyFrac
     elimination.Tvmult(rhs, shifted);
     rhs *= -1.;
 
-    TrilinosWrappers::SparseMatrix matrix;
-    matrix.reinit(reduced);
     Vector<double>     y(n_u);
     const unsigned int iterations =
       solve_cg_amg(matrix, y, rhs, dofs, vertices, solver);

@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
@@ -116,10 +117,11 @@ namespace PolyFrac
                      const std::vector<LocalRows>              &rows,
                      Vector<double>                            &offset);
 
-    /** K = Z^T A Z + Σ_σ |σ| E (on the jump variables). */
+    /** @p matrix = Z^T A Z + Σ_σ |σ| E (on the jump variables). */
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
-                          const std::vector<LocalRows>              &rows);
+                          const std::vector<LocalRows>              &rows,
+                          TrilinosWrappers::SparseMatrix &matrix) const;
 
     const SparseMatrix<double>                      &stiffness;
     const DoFMap<dim>                               &dofs;
@@ -131,10 +133,9 @@ namespace PolyFrac
     /** Dofs that are neither fixed nor bubbles. */
     std::vector<bool> free_nodal;
 
-    /** Z, A Z, Z^T A Z and the reduced operator, with their patterns. */
-    SparsityPattern elimination_pattern, product_pattern, projected_pattern,
-      reduced_pattern;
-    SparseMatrix<double> elimination, product, projected, reduced;
+    /** Z, the elimination of the multipliers (with its pattern). */
+    SparsityPattern      elimination_pattern;
+    SparseMatrix<double> elimination;
   };
 } // namespace PolyFrac
 
