@@ -175,18 +175,17 @@ namespace PolyFrac
     // face i, b = Q^T b̃, with, per local row k, b̃_k a reduced dof (stored
     // at the bubble's dof k), or b̃_k = (d[[u]]~_k − (Q Σ w du)_k)/w_b,
     // where d[[u]]~_k is prescribed (kinematic row, in z_0) or a reduced
-    // dof (jump variable).
-    std::vector<std::map<types::global_dof_index, double>> entries(n_u);
-    for (types::global_dof_index dof = 0; dof < n_u; ++dof)
-      if (free_nodal[dof])
-        entries[dof][dof] = 1.;
+    // dof (jump variable). Only the bubble rows need a map.
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    std::vector<std::map<types::global_dof_index, double>> bubble_rows(
+      dim * faces.size());
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
         const auto  &Q   = faces[i].frame;
         const double w_b = bubble_weight(i);
         for (unsigned int c = 0; c < dim; ++c)
           {
-            auto &row = entries[dofs.bubble_dof(i, c)];
+            auto &row = bubble_rows[dofs.bubble_dof(i, c) - first_bubble];
             for (unsigned int k = 0; k < dim; ++k)
               {
                 if (!rows[i].kinematic[k] && !rows[i].jump_variable[k])
@@ -209,14 +208,20 @@ namespace PolyFrac
       }
 
     DynamicSparsityPattern dsp(stiffness.m(), n_u);
-    for (types::global_dof_index dof = 0; dof < n_u; ++dof)
-      for (const auto &[column, value] : entries[dof])
-        dsp.add(dof, column);
+    for (types::global_dof_index dof = 0; dof < first_bubble; ++dof)
+      if (free_nodal[dof])
+        dsp.add(dof, dof);
+    for (types::global_dof_index k = 0; k < bubble_rows.size(); ++k)
+      for (const auto &[column, value] : bubble_rows[k])
+        dsp.add(first_bubble + k, column);
     elimination_pattern.copy_from(dsp);
     elimination.reinit(elimination_pattern);
-    for (types::global_dof_index dof = 0; dof < n_u; ++dof)
-      for (const auto &[column, value] : entries[dof])
-        elimination.set(dof, column, value);
+    for (types::global_dof_index dof = 0; dof < first_bubble; ++dof)
+      if (free_nodal[dof])
+        elimination.set(dof, dof, 1.);
+    for (types::global_dof_index k = 0; k < bubble_rows.size(); ++k)
+      for (const auto &[column, value] : bubble_rows[k])
+        elimination.set(first_bubble + k, column, value);
   }
 
 
@@ -337,8 +342,13 @@ namespace PolyFrac
     step.reinit(residual.size());
     elimination.vmult(step, y);
     step += offset;
-    Vector<double> A_step(residual.size());
-    stiffness.vmult(A_step, step);
+    const auto A_step = [&](const types::global_dof_index row) {
+      double value = 0;
+      for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
+           ++entry)
+        value += entry->value() * step(entry->column());
+      return value;
+    };
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
         const auto    &Q   = faces[i].frame;
