@@ -1,7 +1,6 @@
 #include <deal.II/base/timer.h>
 
 #include <polyfrac/app/simulator.h>
-#include <polyfrac/base/expressions.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/mesh/gmsh_reader.h>
@@ -157,63 +156,6 @@ namespace PolyFrac
 
 
 
-  namespace
-  {
-    /**
-     * Prints the largest opening −[[u]]_σ·n^+ over the open fracture faces
-     * and where it is; with an exact jump, also the exact opening at that
-     * face centroid (Sneddon: the analytic maximum at the crack centre).
-     */
-    template <int dim>
-    void
-    print_maximum_opening(std::ostream                   &out,
-                          const Parameters               &prm,
-                          const MeshGeometry<dim>        &geometry,
-                          const FractureNetwork<dim>     &network,
-                          const Elasticity<dim>          &mechanics,
-                          const std::vector<NormalState> &states)
-    {
-      double       opening = 0;
-      unsigned int face    = numbers::invalid_unsigned_int;
-      for (unsigned int i = 0; i < states.size(); ++i)
-        {
-          const double value =
-            -mechanics.jump_value(i) * network.fracture_faces[i].normal;
-          if (states[i] == NormalState::open && value > opening)
-            {
-              opening = value;
-              face    = i;
-            }
-        }
-      if (face == numbers::invalid_unsigned_int)
-        return;
-      const Point<dim> &x =
-        geometry.faces[network.fracture_faces[face].face].centroid;
-      out << "Maximum opening: " << std::setprecision(5) << opening << " at ("
-          << x << ")";
-      if (!prm.exact.displacement_jump.empty())
-        {
-          const auto exact =
-            make_expression<dim>("Exact solution/Displacement jump",
-                                 prm.exact.displacement_jump,
-                                 dim,
-                                 prm.constants);
-          Tensor<1, dim> jump;
-          for (unsigned int d = 0; d < dim; ++d)
-            jump[d] = exact->value(x, d);
-          const double exact_opening =
-            -jump * network.fracture_faces[face].normal;
-          out << ", exact there " << exact_opening;
-          if (exact_opening > 0)
-            out << " (ratio " << std::setprecision(4) << opening / exact_opening
-                << ")";
-        }
-      out << std::defaultfloat << std::setprecision(6) << std::endl;
-    }
-  } // namespace
-
-
-
   template <int dim>
   Simulator<dim>::Simulator(const Parameters &prm)
     : prm(prm)
@@ -272,12 +214,24 @@ namespace PolyFrac
         newton_iterations    = contact->n_newton_iterations();
         n_unknowns           = contact->n_unknowns();
         out << "Newton iterations: " << *newton_iterations << std::endl;
-        print_maximum_opening(out,
-                              prm,
-                              geometry,
-                              network,
-                              contact->displacement(),
-                              contact->normal_state);
+        if (const auto opening = maximum_opening(prm,
+                                                 geometry,
+                                                 network,
+                                                 contact->displacement(),
+                                                 contact->normal_state))
+          {
+            const Point<dim> &x =
+              geometry.faces[network.fracture_faces[opening->face].face]
+                .centroid;
+            out << "Maximum opening: " << std::setprecision(5) << opening->value
+                << " at (" << x << ")";
+            if (opening->exact)
+              out << ", exact there " << *opening->exact;
+            if (opening->exact && *opening->exact > 0)
+              out << " (ratio " << std::setprecision(4)
+                  << opening->value / *opening->exact << ")";
+            out << std::defaultfloat << std::setprecision(6) << std::endl;
+          }
       }
     else
       {

@@ -48,6 +48,17 @@ namespace PolyFrac
         }
       return sums;
     }
+
+    /** The exact jump [u] of the parameter file. */
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    exact_jump(const Parameters &prm)
+    {
+      return make_expression<dim>("Exact solution/Displacement jump",
+                                  prm.exact.displacement_jump,
+                                  dim,
+                                  prm.constants);
+    }
   } // namespace
 
 
@@ -94,12 +105,8 @@ namespace PolyFrac
       }
     if (!prm.exact.displacement_jump.empty())
       {
-        const auto exact =
-          make_expression<dim>("Exact solution/Displacement jump",
-                               prm.exact.displacement_jump,
-                               dim,
-                               prm.constants);
-        const auto sums = fracture_face_errors<dim>(
+        const auto exact = exact_jump<dim>(prm);
+        const auto sums  = fracture_face_errors<dim>(
           *exact, geometry, network, [&elasticity](const unsigned int i) {
             return elasticity.jump_value(i);
           });
@@ -129,6 +136,38 @@ namespace PolyFrac
 
 
 
+  template <int dim>
+  std::optional<MaximumOpening>
+  maximum_opening(const Parameters               &prm,
+                  const MeshGeometry<dim>        &geometry,
+                  const FractureNetwork<dim>     &network,
+                  const Elasticity<dim>          &elasticity,
+                  const std::vector<NormalState> &states)
+  {
+    std::optional<MaximumOpening> result;
+    for (unsigned int i = 0; i < states.size(); ++i)
+      {
+        const double opening =
+          -elasticity.jump_value(i) * network.fracture_faces[i].normal;
+        if (states[i] == NormalState::open && opening > 0 &&
+            (!result || opening > result->value))
+          result = MaximumOpening{opening, i, {}};
+      }
+    if (result && !prm.exact.displacement_jump.empty())
+      {
+        const auto        exact = exact_jump<dim>(prm);
+        const Point<dim> &x =
+          geometry.faces[network.fracture_faces[result->face].face].centroid;
+        Tensor<1, dim> jump;
+        for (unsigned int d = 0; d < dim; ++d)
+          jump[d] = exact->value(x, d);
+        result->exact = -jump * network.fracture_faces[result->face].normal;
+      }
+    return result;
+  }
+
+
+
   template Errors
   compute_errors(const Parameters &,
                  const MeshGeometry<2> &,
@@ -141,4 +180,16 @@ namespace PolyFrac
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
                  const Elasticity<3> &);
+  template std::optional<MaximumOpening>
+  maximum_opening(const Parameters &,
+                  const MeshGeometry<2> &,
+                  const FractureNetwork<2> &,
+                  const Elasticity<2> &,
+                  const std::vector<NormalState> &);
+  template std::optional<MaximumOpening>
+  maximum_opening(const Parameters &,
+                  const MeshGeometry<3> &,
+                  const FractureNetwork<3> &,
+                  const Elasticity<3> &,
+                  const std::vector<NormalState> &);
 } // namespace PolyFrac

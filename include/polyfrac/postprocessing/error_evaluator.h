@@ -2,6 +2,7 @@
 #define polyfrac_postprocessing_error_evaluator_h
 
 #include <polyfrac/base/parameters.h>
+#include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
 
 #include <optional>
@@ -42,6 +43,28 @@ namespace PolyFrac
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
                  const Elasticity<dim>      &elasticity);
+
+  /**
+   * The largest opening −[[u_D]]_σ·n^+ over the fracture faces in state
+   * open, the face where it is, and, when the exact jump is given, the
+   * exact opening at that face centroid (Sneddon: the analytic maximum at
+   * the crack centre).
+   */
+  struct MaximumOpening
+  {
+    double                value;
+    unsigned int          face;
+    std::optional<double> exact;
+  };
+
+  /** The MaximumOpening, or nothing when no face is open. */
+  template <int dim>
+  std::optional<MaximumOpening>
+  maximum_opening(const Parameters               &prm,
+                  const MeshGeometry<dim>        &geometry,
+                  const FractureNetwork<dim>     &network,
+                  const Elasticity<dim>          &elasticity,
+                  const std::vector<NormalState> &states);
 } // namespace PolyFrac
 
 #endif
