@@ -41,6 +41,27 @@ namespace PolyFrac::Testing
                                    Point<3>(-1, 0, 1)}};
   }
 
+  /**
+   * The check of a claim of exactness: stops the test (an exception, so a
+   * non-zero exit status) naming @p what unless |@p value| <= @p tolerance
+   * (NaN fails). Returns what the output prints, "0 (round-off)". The
+   * default 1e-12 suits O(1) data on the few hundred cells of a unit
+   * test: about 1e4 units of round-off, far below any discretisation
+   * error (>= 1e-3 on such meshes).
+   */
+  inline std::string
+  expect_round_off(const std::string &what,
+                   const double       value,
+                   const double       tolerance = 1e-12)
+  {
+    std::ostringstream message;
+    message << what << " is " << value << ", not zero to round-off (tolerance "
+            << tolerance << ").";
+    AssertThrow(std::abs(value) <= tolerance,
+                dealii::ExcMessage(message.str()));
+    return "0 (round-off)";
+  }
+
   /** Prints @p value as "0" below @p tol (round-off), else 3 digits. */
   inline std::string
   round_off(const double value, const double tol = 1e-12)

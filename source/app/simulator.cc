@@ -6,6 +6,7 @@
 #include <polyfrac/mesh/gmsh_reader.h>
 #include <polyfrac/mesh/mesh_builder.h>
 #include <polyfrac/physics/elasticity.h>
+#include <polyfrac/postprocessing/verification.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -180,6 +181,30 @@ namespace PolyFrac
       }
     out << std::endl;
     write_convergence_table(out, rows);
+    report_checks(out);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::report_checks(std::ostream &out) const
+  {
+    const ConvergenceCheck check = check_convergence(prm, rows);
+    if (check.n_checked == 0)
+      return;
+    if (check.failures.empty())
+      {
+        out << "Convergence checks: all " << check.n_checked << " hold"
+            << std::endl;
+        return;
+      }
+    std::string message = std::to_string(check.failures.size()) + " of " +
+                          std::to_string(check.n_checked) +
+                          " convergence checks fail:";
+    for (const std::string &failure : check.failures)
+      message += "\n  " + failure;
+    AssertThrow(false, ExcMessage(message));
   }
 
 

@@ -321,6 +321,26 @@ namespace PolyFrac
                       Patterns::Integer(1, 12),
                       "Level k: base mesh refined k more times globally, then "
                       "local refinement, distortion and agglomeration.");
+    const std::string columns =
+      "err_u|err_grad_u|err_jump|err_lambda_hm12|err_lambda_l2";
+    prm.declare_entry(
+      "Maximum errors",
+      "",
+      Patterns::Map(Patterns::Selection(columns), Patterns::Double(0)),
+      "Checks on the convergence table, as `column: bound` pairs (e.g. "
+      "`err_u: 1e-12, err_grad_u: 1e-11` for a patch test): every level "
+      "must have each listed error at most its bound, or the program "
+      "stops with a non-zero exit status naming the level and the "
+      "column. The column's exact field must be given.");
+    prm.declare_entry(
+      "Minimum rates",
+      "",
+      Patterns::Map(Patterns::Selection(columns), Patterns::Double()),
+      "Checks on the observed orders log(e_{k-1}/e_k)/log(h_{k-1}/h_k), as "
+      "`column: rate` pairs (e.g. `err_grad_u: 0.9`): every pair of "
+      "consecutive levels must reach each listed rate, or the program "
+      "stops with a non-zero exit status. Start the study in the "
+      "asymptotic range (Mesh/Subdivisions) when you set this.");
     prm.leave_subsection();
 
     prm.enter_subsection("Contact");
@@ -627,6 +647,16 @@ namespace PolyFrac
 
     prm->enter_subsection("Convergence study");
     n_refinement_levels = prm->get_integer("Number of refinement levels");
+    using Bounds        = std::map<std::string, double>;
+    checks.maximum_errors =
+      Patterns::Tools::Convert<Bounds>::to_value(prm->get("Maximum errors"));
+    checks.minimum_rates =
+      Patterns::Tools::Convert<Bounds>::to_value(prm->get("Minimum rates"));
+    AssertThrow(checks.minimum_rates.empty() || n_refinement_levels > 1,
+                ExcMessage(
+                  "In <" + file_name +
+                  ">: Convergence study/Minimum rates needs at least "
+                  "two levels: set Number of refinement levels >= 2."));
     prm->leave_subsection();
 
     prm->enter_subsection("Contact");

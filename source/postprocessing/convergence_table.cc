@@ -6,19 +6,31 @@
 
 namespace PolyFrac
 {
+  std::optional<double>
+  observed_rate(const ConvergenceRow     &coarse,
+                const ConvergenceRow     &fine,
+                std::optional<ErrorValue> Errors::*const column)
+  {
+    const auto &e_coarse = coarse.errors.*column;
+    const auto &e_fine   = fine.errors.*column;
+    // Levels whose h differs by less than 0.1 % (e.g. a gmsh mesh that
+    // refinement leaves unchanged) have no meaningful rate.
+    if (!e_coarse || !e_fine || e_coarse->value <= 0 || e_fine->value <= 0 ||
+        std::abs(coarse.h / fine.h - 1) < 1e-3)
+      return {};
+    return std::log(e_coarse->value / e_fine->value) /
+           std::log(coarse.h / fine.h);
+  }
+
+
+
   void
   write_convergence_table(std::ostream                      &out,
                           const std::vector<ConvergenceRow> &rows,
                           const bool                         with_rates,
                           const bool                         csv)
   {
-    using Column = std::pair<std::string, std::optional<ErrorValue> Errors::*>;
-    const std::vector<Column> columns = {{"err_u", &Errors::u},
-                                         {"err_grad_u", &Errors::grad_u},
-                                         {"err_jump", &Errors::jump},
-                                         {"err_lambda_hm12",
-                                          &Errors::lambda_hm12},
-                                         {"err_lambda_l2", &Errors::lambda_l2}};
+    const std::vector<ErrorColumn> &columns = error_columns();
     if (csv)
       {
         out << "level,h,n_cells,n_dofs,err_u,err_grad_u,err_jump,"
@@ -66,16 +78,13 @@ namespace PolyFrac
                   << (row.errors.*member)->value << std::defaultfloat;
               if (with_rates)
                 {
-                  const double previous =
-                    (rows[r - 1 + (r == 0)].errors.*member)->value;
-                  if (r == 0 || std::abs(rows[r - 1].h / row.h - 1) < 1e-3 ||
-                      previous <= 0 || (row.errors.*member)->value <= 0)
-                    out << std::setw(7) << "-";
-                  else
+                  if (const std::optional<double> rate =
+                        r == 0 ? std::nullopt :
+                                 observed_rate(rows[r - 1], row, member))
                     out << std::setw(7) << std::fixed << std::setprecision(2)
-                        << std::log(previous / (row.errors.*member)->value) /
-                             std::log(rows[r - 1].h / row.h)
-                        << std::defaultfloat;
+                        << *rate << std::defaultfloat;
+                  else
+                    out << std::setw(7) << "-";
                 }
             }
         out << '\n';

@@ -63,6 +63,20 @@ namespace PolyFrac
 
 
 
+  const std::vector<ErrorColumn> &
+  error_columns()
+  {
+    static const std::vector<ErrorColumn> columns = {
+      {"err_u", &Errors::u},
+      {"err_grad_u", &Errors::grad_u},
+      {"err_jump", &Errors::jump},
+      {"err_lambda_hm12", &Errors::lambda_hm12},
+      {"err_lambda_l2", &Errors::lambda_l2}};
+    return columns;
+  }
+
+
+
   template <int dim>
   Errors
   compute_errors(const Parameters           &prm,

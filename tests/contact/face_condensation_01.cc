@@ -144,6 +144,12 @@ check(const unsigned int subdivisions)
   faces[2].M_lambda[1][0]        = -0.5;
   const bool coulomb_condensable = FaceCondensation<dim>::condensable(faces);
 
+  AssertThrow(condensable,
+              ExcMessage("Open, stick, Tresca slip and frictionless faces "
+                         "must be condensable."));
+  AssertThrow(!coulomb_condensable,
+              ExcMessage("A Coulomb face slipping in contact must be "
+                         "refused by the condensation."));
   std::cout << dim << "D, " << n_faces << " fracture faces: " << count[0]
             << " open, " << count[1] << " stick, " << count[2]
             << " Tresca slip, " << count[3] << " frictionless contact"
@@ -155,9 +161,14 @@ check(const unsigned int subdivisions)
             // CG stops at a relative residual of 1e-14; the step inherits
             // it times the condition number of the reduced operator.
             << "  |du_condensed - du_saddle| / |du|: "
-            << Testing::round_off(u_error / u_norm, 1e-9) << std::endl
+            << Testing::expect_round_off("condensed displacement step",
+                                         u_error / u_norm,
+                                         1e-9)
+            << std::endl
             << "  |dlambda_condensed - dlambda_saddle| / |dlambda|: "
-            << Testing::round_off(lambda_error / lambda_norm, 1e-9)
+            << Testing::expect_round_off("condensed multiplier step",
+                                         lambda_error / lambda_norm,
+                                         1e-9)
             << std::endl;
 }
 

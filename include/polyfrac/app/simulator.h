@@ -46,7 +46,8 @@ namespace PolyFrac
    * The PolyFrac program: runs the scene of a parameter file on each level
    * of the convergence study, writes the VTU files, `convergence.csv` and
    * the used parameters to the output directory, and prints the
-   * convergence table with the observed rates.
+   * convergence table with the observed rates; stops with an error when a
+   * check of the convergence study (Maximum errors, Minimum rates) fails.
    */
   template <int dim>
   class Simulator
@@ -60,6 +61,13 @@ namespace PolyFrac
   private:
     ConvergenceRow
     run_level(const unsigned int level, std::ostream &out);
+
+    /**
+     * Prints how many checks of Convergence study/Maximum errors and
+     * Minimum rates hold, and throws, naming each one that fails.
+     */
+    void
+    report_checks(std::ostream &out) const;
 
     const Parameters           &prm;
     std::vector<ConvergenceRow> rows;

@@ -133,6 +133,16 @@ namespace PolyFrac
 
     unsigned int n_refinement_levels;
 
+    /**
+     * Convergence study/Maximum errors and Minimum rates: bounds per error
+     * column (err_u, err_grad_u, ...), checked by check_convergence().
+     */
+    struct ConvergenceChecks
+    {
+      std::map<std::string, double> maximum_errors;
+      std::map<std::string, double> minimum_rates;
+    } checks;
+
     /** Contact (Model = contact mechanics). */
     struct ContactData
     {

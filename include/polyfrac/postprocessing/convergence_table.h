@@ -22,6 +22,17 @@ namespace PolyFrac
   };
 
   /**
+   * The observed order of an error column between two consecutive levels,
+   * log(e_{k-1}/e_k) / log(h_{k-1}/h_k) (scheme.md §8), or nothing when it
+   * is undefined: the column is missing, an error is not positive, or the
+   * two levels have the same h.
+   */
+  std::optional<double>
+  observed_rate(const ConvergenceRow     &coarse,
+                const ConvergenceRow     &fine,
+                std::optional<ErrorValue> Errors::*const column);
+
+  /**
    * Writes @p rows either as convergence.csv (@p csv: every column, empty
    * where an exact field is not given) or as the table the programs print:
    * the given errors with six significant digits and, if @p with_rates,

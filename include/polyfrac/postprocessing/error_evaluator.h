@@ -6,6 +6,9 @@
 #include <polyfrac/physics/elasticity.h>
 
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace PolyFrac
 {
@@ -35,6 +38,14 @@ namespace PolyFrac
   {
     std::optional<ErrorValue> u, grad_u, jump, lambda_hm12, lambda_l2;
   };
+
+  /** An error column of convergence.csv: its name and its member of Errors. */
+  using ErrorColumn =
+    std::pair<std::string, std::optional<ErrorValue> Errors::*>;
+
+  /** The error columns of convergence.csv, in their order. */
+  const std::vector<ErrorColumn> &
+  error_columns();
 
   template <int dim>
   Errors

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Compares two runs of one scene: as it is (A) and with extra --set
+# arguments (B). CHECK is one of
+#   equal=TOL            B's convergence table equals A's (columns level to
+#                        err_lambda_l2 of convergence.csv; the Newton
+#                        iterations and wall times may differ) to the
+#                        relative tolerance TOL, by numdiff;
+#   smaller=COLUMN:F     on every level, B's error COLUMN is at most F times
+#                        A's (e.g. B adds a stabilisation A lacks).
+# Exits non-zero, printing both tables, when the check fails.
+#
+# usage: compare_runs.sh POLYFRAC WORKDIR CHECK FILE.prm [--set A=B ...]
+#                        -- [--set C=D ...]
+set -euo pipefail
+polyfrac=$1 workdir=$2 check=$3 prm=$4
+shift 4
+common=()
+while [ $# -gt 0 ] && [ "$1" != "--" ]; do common+=("$1"); shift; done
+[ $# -gt 0 ] && shift
+
+mkdir -p "$workdir"
+run() {
+  local dir=$workdir/$1
+  shift
+  "$polyfrac" "$prm" "${common[@]}" --set "Output/Output directory=$dir" \
+    --set "Output/Write VTU=false" "$@" > "$dir.log" 2>&1 ||
+    { cat "$dir.log"; echo "run $dir failed"; exit 1; }
+  cut -d, -f1-9 "$dir/convergence.csv" > "$dir.csv"
+}
+run a
+run b "$@"
+a=$workdir/a.csv b=$workdir/b.csv
+fail() {
+  echo "$1"
+  echo "A:"; cat "$a"; echo "B ($*):"; cat "$b"
+  exit 1
+}
+
+case $check in
+  equal=*)
+    tolerance=${check#equal=}
+    numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$a" "$b" ||
+      fail "The runs differ (relative tolerance $tolerance)."
+    echo "Same convergence table (relative tolerance $tolerance):" \
+      "$(($(wc -l < "$a") - 1)) levels"
+    ;;
+  smaller=*)
+    spec=${check#smaller=} column=${spec%%:*} factor=${spec#*:}
+    paste -d, "$a" "$b" | awk -F, -v name="$column" -v factor="$factor" '
+      NR == 1 { for (i = 1; i <= NF / 2; ++i) if ($i == name) c = i
+                if (!c) { print "no column " name; exit 1 }
+                next }
+      { n = NF / 2
+        if ($c == "" || $(c + n) == "" || !($(c + n) <= factor * $c)) {
+          print "level " $1 ": " name " " $(c + n) " is not below " factor \
+                " x " $c; exit 1 }
+        printf "level %d: %s %s <= %s x %s\n", $1, name, $(c + n), factor, $c }' ||
+      fail "The check $check fails."
+    ;;
+  *) echo "unknown check $check"; exit 2 ;;
+esac
