@@ -61,17 +61,6 @@ namespace PolyFrac::Testing
                 dealii::ExcMessage(message.str()));
     return "0 (round-off)";
   }
-
-  /** Prints @p value as "0" below @p tol (round-off), else 3 digits. */
-  inline std::string
-  round_off(const double value, const double tol = 1e-12)
-  {
-    if (std::abs(value) < tol)
-      return "0 (round-off)";
-    std::ostringstream out;
-    out << std::setprecision(3) << value;
-    return out.str();
-  }
 } // namespace PolyFrac::Testing
 
 #endif
