@@ -652,6 +652,20 @@ namespace PolyFrac
       Patterns::Tools::Convert<Bounds>::to_value(prm->get("Maximum errors"));
     checks.minimum_rates =
       Patterns::Tools::Convert<Bounds>::to_value(prm->get("Minimum rates"));
+    for (const auto *bounds : {&checks.maximum_errors, &checks.minimum_rates})
+      for (const auto &[column, bound] : *bounds)
+        {
+          const std::string &field =
+            column == "err_jump" ? exact.displacement_jump :
+            column.find("lambda") != std::string::npos ?
+                                   exact.contact_traction :
+                                   exact.displacement;
+          AssertThrow(!field.empty(),
+                      ExcMessage("In <" + file_name +
+                                 ">: Convergence study checks " + column +
+                                 ", but its exact field is not given in "
+                                 "subsection Exact solution."));
+        }
     AssertThrow(checks.minimum_rates.empty() || n_refinement_levels > 1,
                 ExcMessage(
                   "In <" + file_name +
