@@ -62,7 +62,8 @@ namespace PolyFrac
     /** The program for the scene of @p prm, which must outlive it. */
     explicit Simulator(const Parameters &prm);
 
-    /** Runs every level, printing the progress and the tables to @p out. */
+    /** Runs every level: prints the progress and the tables to @p out and
+     * writes the outputs to the output directory. */
     void
     run(std::ostream &out);
 

@@ -76,7 +76,7 @@ namespace PolyFrac
 
     /** The spatial dimension d (Dimension). */
     unsigned int dim;
-    /** The parameter file parsed (relative paths are relative to it). */
+    /** The parameter file parsed, named in error messages. */
     std::string file_name;
 
     /** Expressions/Function constants, as name -> value. */
@@ -114,7 +114,8 @@ namespace PolyFrac
       unsigned int random_seed;
       /** Cells per polytope of the METIS agglomeration (1: none). */
       unsigned int cells_per_polytope;
-      /** File name of the gmsh mesh (relative to the parameter file). */
+      /** File name of the gmsh mesh; a relative name is resolved against
+       * the directory of the parameter file when parsed. */
       std::string file_name;
     } mesh; /**< The subsection Mesh. */
 

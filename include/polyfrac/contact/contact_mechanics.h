@@ -23,15 +23,21 @@ namespace PolyFrac
   /** Normal contact state of a fracture face. */
   enum class NormalState
   {
+    /** Open: λ_n = 0 and [[u]]_n ≤ 0 (the fracture opens). */
     open,
+    /** Contact: [[u]]_n = 0, λ_n ≥ 0. */
     contact
   };
 
   /** Tangential state of a fracture face (free: no friction acts). */
   enum class TangentialState
   {
+    /** Stick: [[u − u^{n−1}]]_τ = 0, |λ_τ| ≤ g. */
     stick,
+    /** Slip: λ_τ = g s/|s| with the slip s = [[u − u^{n−1}]]_τ ≠ 0. */
     slip,
+    /** Free: no friction acts (frictionless, or an open face under Coulomb
+     * friction): λ_τ = 0. */
     free
   };
 
