@@ -11,7 +11,7 @@
  * This program is for readers who know deal.II's tutorials and want to see
  * what the bubble-stabilised polytopal scheme of PolyFrac (Droniou,
  * Enchéry, Faille, Haidar, Masson, CMAME 2024; the formulas are those of
- * scheme.md §2-5, see the README) computes. It solves linear elasticity in
+ * doc/scheme.md §2-5, see the README) computes. It solves linear elasticity in
  * a fractured square. The mesh, its geometry and the numbering of the
  * unknowns come from the library; the linear system is assembled here with
  * deal.II's AffineConstraints, SparseMatrix and SparseDirectUMFPACK. The
@@ -479,7 +479,7 @@ namespace Step1
   // is far below any discretisation difference. The program stops with an
   // error otherwise; it prints "< 1e-12" so that its output does not depend
   // on the machine.
-  // The errors of scheme.md §8 are computed by the library from the
+  // The errors of doc/scheme.md §8 are computed by the library from the
   // Elasticity object (they are the same for ours).
   template <int dim>
   void
@@ -659,7 +659,7 @@ main(int argc, char **argv)
  * Possibilities for extensions. Try `--set "Mesh/Distortion=0.3"` or
  * simplices (`--set "Mesh/Cell type=simplex" --set "Mesh/Local
  * refinements=0"`); the two solutions agree on every mesh. Making λ_σ an
- * unknown with the contact conditions of scheme.md §6 gives the frictional
+ * unknown with the contact conditions of doc/scheme.md §6 gives the frictional
  * contact problem, solved by the primal-dual active set strategy of
  * deal.II's step-41 on the fracture faces.
  */

@@ -19,7 +19,7 @@
  * the primal-dual active set method by which it was found, in the way
  * deal.II's step-41 narrates it for the obstacle problem.
  *
- * We keep the notation of step-1 and of scheme.md §2: n^+ is the unit
+ * We keep the notation of step-1 and of doc/scheme.md §2: n^+ is the unit
  * normal out of the + side, [u] = u^+ − u^- the jump, λ = −T^+ minus the
  * traction on the + side. Normal and tangential parts are taken in the
  * frame (n^+, τ) of the fracture: [u]_n = [u]·n^+, λ_n = λ·n^+, and
@@ -66,7 +66,7 @@
  * The discrete problem
  * --------------------
  *
- * The scheme (scheme.md §5) has one constant multiplier λ_σ ∈ R^d on each
+ * The scheme (doc/scheme.md §5) has one constant multiplier λ_σ ∈ R^d on each
  * fracture face σ. Its admissible set is the discrete cone C_D = {λ_D :
  * λ_{σ,n} ≥ 0, |λ_{σ,τ}| ≤ g_σ}, and the problem is: find u_D and λ_D ∈
  * C_D such that
@@ -102,7 +102,7 @@
  *
  *     b_n = λ_n + β [[u]]_n,       b_τ = λ_τ + β [[u]]_τ,
  *
- * the contact conditions become the two equations (scheme.md §6)
+ * the contact conditions become the two equations (doc/scheme.md §6)
  *
  *     λ_n − [b_n]_+ = 0,           λ_τ − P_{B(0,g)}(b_τ) = 0,
  *
@@ -232,7 +232,7 @@
  *      residuals vanish and that the states do not depend on β;
  *   4. on the finest level, prints λ_n, λ_τ and [[u]]_τ on a few faces
  *      along the fracture next to the exact values;
- *   5. computes the errors of scheme.md §8 (compute_errors) and prints
+ *   5. computes the errors of doc/scheme.md §8 (compute_errors) and prints
  *      them with the observed orders.
  */
 
@@ -385,7 +385,7 @@ namespace Step2
 
   // @sect4{ActiveSetCheck::evaluate}
 
-  // This is scheme.md §6 written out for one face. The default β_σ is
+  // This is doc/scheme.md §6 written out for one face. The default β_σ is
   // (2μ + λ_L)/h_σ with h_σ the diameter of the face; a positive
   // `Contact/Complementarity parameter` replaces it. Then b_n and b_τ,
   // the threshold g, the states by the four cases of the introduction,
@@ -822,7 +822,7 @@ namespace Step2
     // As in step-1, the orders are checked over the whole study (METIS
     // makes the level-to-level rates fluctuate): the gradient error and
     // the H^{-1/2} error of the multiplier are of first order at least
-    // (scheme.md §8), with 10 % for the pre-asymptotic coarsest level.
+    // (doc/scheme.md §8), with 10 % for the pre-asymptotic coarsest level.
     if (rows.size() > 1)
       for (const auto &[name, column] :
            {std::pair{"err_grad_u", &Errors::grad_u},
@@ -972,7 +972,7 @@ main(int argc, char **argv)
  * unknown multiplier costs no accuracy. The multiplier converges with
  * order about 1 in L² (0.96 to 1.14 after level 0) and about 1.5 in the
  * H^{−1/2} surrogate, whose order is the L² order plus 1/2 by
- * construction (scheme.md §8); the theory for Tresca predicts at least 1.
+ * construction (doc/scheme.md §8); the theory for Tresca predicts at least 1.
  * The rates fluctuate for the reason given in step-1: METIS agglomerates
  * each level differently. (On the Cartesian meshes of
  * prm/b2-2d-tresca.prm the polyfrac program measures 1.66 and 2.16 for
@@ -990,7 +990,7 @@ main(int argc, char **argv)
  *
  *   - 4, 6, 8 and 14 Newton iterations. On level 3 the tangential states
  *     alternated between about 7 and 35 stick faces (iterations 3-7), the
- *     cycling near stick/slip transitions that scheme.md §6 warns about;
+ *     cycling near stick/slip transitions that doc/scheme.md §6 warns about;
  *     ContactMechanics recognised the repeated states, divided β by 10,
  *     and converged 7 iterations later. All checks pass as for Tresca.
  *   - Stick up to the face centred at −0.2422, slip from −0.2266 on level

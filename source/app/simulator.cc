@@ -1,10 +1,10 @@
 #include <deal.II/base/timer.h>
 
+#include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/mesh/gmsh_reader.h>
-#include <polyfrac/mesh/mesh_builder.h>
 #include <polyfrac/physics/elasticity.h>
 #include <polyfrac/postprocessing/verification.h>
 

@@ -2,7 +2,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
-#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
 #include <algorithm>

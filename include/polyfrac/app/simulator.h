@@ -5,9 +5,9 @@
 
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
-#include <polyfrac/discretization/geometry.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 
@@ -29,17 +29,24 @@ namespace PolyFrac
   class LevelDiscretization
   {
   public:
+    /** Builds the mesh of refinement level @p level of the scene of @p prm
+     * and everything on it, in the order of the members below. */
     LevelDiscretization(const Parameters &prm, const unsigned int level);
 
     /** Prints cells, faces, node sides, fractures and the mesh quality. */
     void
     print_summary(std::ostream &out) const;
 
-    Triangulation<dim>                    triangulation;
-    std::unique_ptr<PolytopalMesh<dim>>   mesh;
-    std::unique_ptr<MeshGeometry<dim>>    geometry;
+    /** The deal.II triangulation (generated box or gmsh file, refined). */
+    Triangulation<dim> triangulation;
+    /** Its polytopal view, distorted and agglomerated. */
+    std::unique_ptr<PolytopalMesh<dim>> mesh;
+    /** The geometry of #mesh. */
+    std::unique_ptr<MeshGeometry<dim>> geometry;
+    /** The fracture faces of #mesh. */
     std::unique_ptr<FractureNetwork<dim>> network;
-    std::unique_ptr<DoFMap<dim>>          dofs;
+    /** The node sides and bubbles of #mesh cut by #network. */
+    std::unique_ptr<DoFMap<dim>> dofs;
   };
 
   /**
@@ -53,8 +60,11 @@ namespace PolyFrac
   class Simulator
   {
   public:
+    /** The program for the scene of @p prm, which must outlive it. */
     explicit Simulator(const Parameters &prm);
 
+    /** Runs every level: prints the progress and the tables to @p out and
+     * writes the outputs to the output directory. */
     void
     run(std::ostream &out);
 

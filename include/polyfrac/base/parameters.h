@@ -74,8 +74,10 @@ namespace PolyFrac
     /** Warnings collected while parsing (entries set but unused). */
     std::vector<std::string> warnings;
 
+    /** The spatial dimension d (Dimension). */
     unsigned int dim;
-    std::string  file_name;
+    /** The parameter file parsed, named in error messages. */
+    std::string file_name;
 
     /** Expressions/Function constants, as name -> value. */
     std::map<std::string, double> constants;
@@ -83,54 +85,86 @@ namespace PolyFrac
     /** Model/Model: elasticity | contact mechanics (poromechanics: not yet). */
     std::string model;
 
-    /** Mesh. */
+    /** Mesh. Points have 3 coordinates; those beyond dim are 0. */
     struct MeshData
     {
-      std::string               source;
-      std::string               cell_type;
-      Point<3>                  lower_left, upper_right;
+      /** Source: hyper rectangle | gmsh. */
+      std::string source;
+      /** Cell type: hypercube | simplex. */
+      std::string cell_type;
+      /** Lower left corner of the generated box. */
+      Point<3> lower_left;
+      /** Upper right corner of the generated box. */
+      Point<3> upper_right;
+      /** Subdivisions: cells per direction of the generated box. */
       std::vector<unsigned int> subdivisions;
-      unsigned int              global_refinements;
-      Point<3>                  box_lower, box_upper;
-      unsigned int              local_refinements;
-      double                    distortion;
-      std::string               distortion_type;
-      unsigned int              random_seed;
-      unsigned int              cells_per_polytope;
-      std::string               file_name;
-    } mesh;
+      /** Global refinements of level 0 (level k refines k more times). */
+      unsigned int global_refinements;
+      /** Lower corner of the Local refinement box. */
+      Point<3> box_lower;
+      /** Upper corner of the Local refinement box. */
+      Point<3> box_upper;
+      /** Local refinements: how often the cells in the box are refined. */
+      unsigned int local_refinements;
+      /** Distortion: vertex displacement relative to the local mesh size. */
+      double distortion;
+      /** Distortion type: random | smooth. */
+      std::string distortion_type;
+      /** Random seed of the random distortion. */
+      unsigned int random_seed;
+      /** Cells per polytope of the METIS agglomeration (1: none). */
+      unsigned int cells_per_polytope;
+      /** File name of the gmsh mesh; a relative name is resolved against
+       * the directory of the parameter file when parsed. */
+      std::string file_name;
+    } mesh; /**< The subsection Mesh. */
 
     /** Fractures. Geometries are lists of points (2 in 2D, >= 3 in 3D). */
     struct FractureData
     {
+      /** Segments (2D) or Polygons (3D): the points of each fracture. */
       std::vector<std::vector<Point<3>>> geometries;
-      std::vector<int>                   gmsh_physical_tags;
-      std::string                        pressure;
-      std::string                        traction;
-    } fractures;
+      /** Gmsh physical tags of the fracture elements of a gmsh mesh. */
+      std::vector<int> gmsh_physical_tags;
+      /** Pressure p_f: a scalar expression. */
+      std::string pressure;
+      /** Traction λ = −T^+: a vector expression (global components). */
+      std::string traction;
+    } fractures; /**< The subsection Fractures. */
 
-    /** Material (constant Lamé coefficients). */
-    double lame_lambda, lame_mu;
+    /** Material/Lame lambda: the Lamé coefficient λ. */
+    double lame_lambda;
+    /** Material/Lame mu: the shear modulus μ > 0. */
+    double lame_mu;
 
+    /** Body force/Function expression: f, a vector expression. */
     std::string body_force;
 
     /** Boundary conditions. */
     struct BoundaryData
     {
-      std::string           dirichlet_expression;
+      /** Dirichlet expression: g_D, a vector expression. */
+      std::string dirichlet_expression;
+      /** Dirichlet boundary ids (empty: every id that is not Neumann). */
       std::vector<unsigned> dirichlet_ids;
+      /** Neumann boundary ids. */
       std::vector<unsigned> neumann_ids;
-      std::string           neumann_traction;
-    } boundary;
+      /** Neumann traction: g_N, a vector expression. */
+      std::string neumann_traction;
+    } boundary; /**< The subsection Boundary conditions. */
 
     /** Exact solution, each empty when not given. */
     struct ExactData
     {
+      /** Displacement u (vector expression). */
       std::string displacement;
+      /** Displacement jump [u] = u^+ − u^- on the fractures. */
       std::string displacement_jump;
+      /** Contact traction λ on the fractures. */
       std::string contact_traction;
-    } exact;
+    } exact; /**< The subsection Exact solution. */
 
+    /** Convergence study/Number of refinement levels. */
     unsigned int n_refinement_levels;
 
     /**
@@ -146,39 +180,52 @@ namespace PolyFrac
     /** Contact (Model = contact mechanics). */
     struct ContactData
     {
+      /** Friction law: frictionless | Tresca | Coulomb. */
       std::string friction_law;
-      double      friction_coefficient;
+      /** Friction coefficient F (Coulomb). */
+      double friction_coefficient;
+      /** Tresca threshold g ≥ 0: a scalar expression. */
       std::string tresca_threshold;
-      bool        bubbles;
+      /** Bubbles: whether the fracture faces carry bubbles. */
+      bool bubbles;
       /** β > 0, or 0 for auto: (2μ + λ)/h_σ per fracture face. */
-      double       beta;
+      double beta;
+      /** Number of load steps N: step k scales the loads by k/N. */
       unsigned int n_load_steps;
-    } contact;
+    } contact; /**< The subsection Contact. */
 
     /** Nonlinear solver (semi-smooth Newton). */
     struct NonlinearData
     {
+      /** Maximum iterations of Newton per load step. */
       unsigned int max_iterations;
-      double       tolerance;
+      /** Tolerance on both relative residuals. */
+      double tolerance;
       /** "previous level" (nested iteration) or "zero". */
       std::string initial_guess;
-    } nonlinear;
+    } nonlinear; /**< The subsection Nonlinear solver. */
 
     /** Linear solver. */
     struct SolverData
     {
-      std::string  method;
-      double       tolerance;
+      /** Method: direct (UMFPACK) | AMG (CG + ML AMG). */
+      std::string method;
+      /** Tolerance: relative residual of CG. */
+      double tolerance;
+      /** Maximum iterations of CG. */
       unsigned int max_iterations;
-    } solver;
+    } solver; /**< The subsection Linear solver. */
 
     /** Output. */
     struct OutputData
     {
+      /** Output directory. */
       std::string directory;
-      bool        write_vtu;
-      bool        print_timings;
-    } output;
+      /** Write VTU: whether the solution files are written. */
+      bool write_vtu;
+      /** Print timings: whether the timing table is printed. */
+      bool print_timings;
+    } output; /**< The subsection Output. */
 
   private:
     static void

@@ -23,22 +23,30 @@ namespace PolyFrac
   /** Normal contact state of a fracture face. */
   enum class NormalState
   {
+    /** Open: λ_n = 0 and [[u]]_n ≤ 0 (the fracture opens). */
     open,
+    /** Contact: [[u]]_n = 0, λ_n ≥ 0. */
     contact
   };
 
   /** Tangential state of a fracture face (free: no friction acts). */
   enum class TangentialState
   {
+    /** Stick: [[u − u^{n−1}]]_τ = 0, |λ_τ| ≤ g. */
     stick,
+    /** Slip: λ_τ = g s/|s| with the slip s = [[u − u^{n−1}]]_τ ≠ 0. */
     slip,
+    /** Free: no friction acts (frictionless, or an open face under Coulomb
+     * friction): λ_τ = 0. */
     free
   };
 
   /** The contact states of the fracture faces. */
   struct ContactStates
   {
-    std::vector<NormalState>     normal;
+    /** Normal state, per fracture face. */
+    std::vector<NormalState> normal;
+    /** Tangential state, per fracture face. */
     std::vector<TangentialState> tangential;
   };
 
@@ -50,14 +58,18 @@ namespace PolyFrac
   template <int dim>
   struct MultiplierField
   {
-    std::vector<unsigned int>   fracture;
-    std::vector<Point<dim>>     centroids;
+    /** The fracture of each face. */
+    std::vector<unsigned int> fracture;
+    /** The centroid x̄_σ of each face. */
+    std::vector<Point<dim>> centroids;
+    /** The multiplier λ_σ of each face, in global components. */
     std::vector<Tensor<1, dim>> values;
-    ContactStates               states;
+    /** The contact states of the faces. */
+    ContactStates states;
   };
 
   /**
-   * Contact mechanics on a fracture network (scheme.md §5-6): the
+   * Contact mechanics on a fracture network (doc/scheme.md §5-6): the
    * bubble-VEM elasticity operator A, one multiplier λ_σ ∈ R^d per fracture
    * face with the coupling Σ_σ |σ| λ_σ·[[v]]_σ, and the contact conditions
    * written with β_σ > 0 as
@@ -101,6 +113,12 @@ namespace PolyFrac
   class ContactMechanics
   {
   public:
+    /**
+     * The contact problem of @p prm (friction law, β, load steps, solver)
+     * on the mesh of @p geometry, the fracture faces of @p network and the
+     * unknowns of @p dofs (the multipliers after the displacement); all four
+     * must outlive this object.
+     */
     ContactMechanics(const Parameters           &prm,
                      const MeshGeometry<dim>    &geometry,
                      const FractureNetwork<dim> &network,
@@ -139,7 +157,9 @@ namespace PolyFrac
       return elasticity;
     }
 
-    std::vector<NormalState>     normal_state;
+    /** The normal state of each fracture face (after solve()). */
+    std::vector<NormalState> normal_state;
+    /** The tangential state of each fracture face (after solve()). */
     std::vector<TangentialState> tangential_state;
 
   private:

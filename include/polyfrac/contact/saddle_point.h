@@ -5,9 +5,9 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
-#include <polyfrac/discretization/geometry.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 
 #include <map>
 #include <vector>
@@ -24,11 +24,16 @@ namespace PolyFrac
   template <int dim>
   struct FaceLinearisation
   {
+    /** Q, the rows n^+, τ_1 (, τ_2) of the face frame. */
     Tensor<2, dim> frame;
+    /** M_λ, the derivative of the conditions in the local multiplier. */
     Tensor<2, dim> M_lambda;
+    /** M_j, the derivative of the conditions in the local jump. */
     Tensor<2, dim> M_jump;
+    /** r, the residual of the conditions (local components). */
     Tensor<1, dim> r;
-    double         measure;
+    /** |σ|. */
+    double measure;
   };
 
   /**

@@ -5,9 +5,9 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <polyfrac/discretization/geometry.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 
 #include <utility>
 #include <vector>
@@ -17,7 +17,7 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * The reconstruction operators of one polytope K (scheme.md §4), as
+   * The reconstruction operators of one polytope K (doc/scheme.md §4), as
    * coefficients acting on its local vector unknowns t = node sides of K
    * (in the order of the cell's vertices) followed by the bubbles of its
    * + fracture faces:
@@ -36,11 +36,14 @@ namespace PolyFrac
   class LocalReconstruction
   {
   public:
+    /** The operators of polytope @p cell of @p geometry, with the node
+     * sides and bubbles of @p dofs on the fracture faces of @p network. */
     LocalReconstruction(const MeshGeometry<dim>    &geometry,
                         const DoFMap<dim>          &dofs,
                         const FractureNetwork<dim> &network,
                         const unsigned int          cell);
 
+    /** Number of local vector unknowns: node sides, then bubbles. */
     unsigned int
     n_local() const
     {
@@ -66,13 +69,20 @@ namespace PolyFrac
     FullMatrix<double>
     stabilisation() const;
 
-    unsigned int                n_nodes;
+    /** Number of vertices of K (the first n_nodes local unknowns). */
+    unsigned int n_nodes;
+    /** G_t, per local unknown. */
     std::vector<Tensor<1, dim>> gradient_coefficients;
-    std::vector<double>         value_weights;
-    Point<dim>                  centroid;
-    double                      measure;
-    double                      diameter;
-    std::vector<Point<dim>>     node_points;
+    /** ω_t, per local unknown (0 for a bubble). */
+    std::vector<double> value_weights;
+    /** x̄_K. */
+    Point<dim> centroid;
+    /** |K|. */
+    double measure;
+    /** h_K. */
+    double diameter;
+    /** x_s, per vertex of K (in the order of the local node unknowns). */
+    std::vector<Point<dim>> node_points;
   };
 
   /**

@@ -14,7 +14,7 @@ namespace PolyFrac
 
   /**
    * FE-less numbering of the unknowns of the bubble-VEM scheme
-   * (scheme.md §3):
+   * (doc/scheme.md §3):
    * - one vector unknown per *node side*: around each vertex s, the cells
    *   containing s are partitioned into classes connected through
    *   non-fracture faces; each class is one node side. A vertex off Γ has
@@ -39,18 +39,25 @@ namespace PolyFrac
     /** A node side: its vertex and the cells of its class. */
     struct NodeSide
     {
-      unsigned int              vertex;
+      /** The vertex s (an index into PolytopalMesh::vertices). */
+      unsigned int vertex;
+      /** The cells of the class: those containing s reached from one
+       * another through faces around s that are not fracture faces. */
       std::vector<unsigned int> cells;
     };
 
+    /** Numbers the node sides of @p mesh cut by @p network, then the
+     * bubbles (one per fracture face of @p network). */
     DoFMap(const PolytopalMesh<dim> &mesh, const FractureNetwork<dim> &network);
 
+    /** Number of node sides. */
     unsigned int
     n_node_sides() const
     {
       return node_sides.size();
     }
 
+    /** Number of bubbles (one per fracture face). */
     unsigned int
     n_bubbles() const
     {
@@ -64,18 +71,23 @@ namespace PolyFrac
       return dim * (n_node_sides() + n_bubbles());
     }
 
+    /** Dof of component @p c of node side @p node_side: dim node_side + c. */
     types::global_dof_index
     node_side_dof(const unsigned int node_side, const unsigned int c) const
     {
       return dim * node_side + c;
     }
 
+    /** Dof of component @p c of the bubble of fracture face
+     * @p fracture_face: dim (n_node_sides + fracture_face) + c. */
     types::global_dof_index
     bubble_dof(const unsigned int fracture_face, const unsigned int c) const
     {
       return dim * (n_node_sides() + fracture_face) + c;
     }
 
+    /** Dof of component @p c of the multiplier λ_σ of fracture face
+     * @p fracture_face, numbered after all displacement unknowns. */
     types::global_dof_index
     multiplier_dof(const unsigned int fracture_face, const unsigned int c) const
     {
@@ -104,6 +116,7 @@ namespace PolyFrac
     std::vector<unsigned int>
     node_side_histogram() const;
 
+    /** The node sides, in dof order. */
     std::vector<NodeSide> node_sides;
 
   private:

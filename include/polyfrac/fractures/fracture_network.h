@@ -4,7 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
 #include <array>
@@ -17,7 +17,7 @@ namespace PolyFrac
 
   /**
    * A planar fracture: a segment A -> B (2D) or a planar convex polygon
-   * P1, P2, ... (3D), with its frame (scheme.md §3).
+   * P1, P2, ... (3D), with its frame (doc/scheme.md §3).
    *
    * Orientation: n^+ is the outward normal of the + side, pointing from the
    * + side into the - side. 2D: n^+ = (-(B-A)_y, (B-A)_x)/|B-A| (the left
@@ -28,6 +28,10 @@ namespace PolyFrac
   template <int dim>
   struct Fracture
   {
+    /**
+     * The fracture with vertices @p points (A, B in 2D; P1, P2, ... in 3D)
+     * and its frame; throws if it has zero measure or, in 3D, is not planar.
+     */
     explicit Fracture(const std::vector<Point<dim>> &points);
 
     /** Distance of @p p to the fracture (to the segment or the polygon). */
@@ -39,10 +43,14 @@ namespace PolyFrac
     bool
     on_boundary(const Point<dim> &p, const double tol) const;
 
-    std::vector<Point<dim>>             points;
-    Tensor<1, dim>                      normal;
+    /** The vertices: A, B (2D) or P1, P2, ... (3D). */
+    std::vector<Point<dim>> points;
+    /** The unit normal n^+. */
+    Tensor<1, dim> normal;
+    /** The unit tangents τ (2D) or τ_1, τ_2 (3D). */
     std::array<Tensor<1, dim>, dim - 1> tangents;
-    double                              measure;
+    /** Length (2D) or area (3D) of the fracture. */
+    double measure;
   };
 
   /**
@@ -62,9 +70,13 @@ namespace PolyFrac
     /** One fracture face σ ∈ F_Γ. */
     struct FractureFace
     {
+      /** The mesh face σ (an index into PolytopalMesh::faces). */
       unsigned int face;
+      /** The fracture σ belongs to (an index into names). */
       unsigned int fracture;
+      /** The + cell K, whose outward normal on σ is n^+. */
       unsigned int plus_cell;
+      /** The - cell L, on the other side of σ. */
       unsigned int minus_cell;
       /** n^+ of this face (that of its fracture, or of its gmsh element). */
       Tensor<1, dim> normal;
@@ -77,8 +89,11 @@ namespace PolyFrac
     /** A fracture face given explicitly (e.g. a gmsh fracture element). */
     struct TaggedFace
     {
-      unsigned int   face;
-      unsigned int   fracture;
+      /** The mesh face (an index into PolytopalMesh::faces). */
+      unsigned int face;
+      /** The fracture it belongs to (an index into the names). */
+      unsigned int fracture;
+      /** Its unit normal n^+ (pointing from the + into the - side). */
       Tensor<1, dim> normal;
     };
 
@@ -91,6 +106,7 @@ namespace PolyFrac
                     const std::vector<TaggedFace>  &tagged_faces,
                     const MeshGeometry<dim>        &geometry);
 
+    /** Number of fracture faces |F_Γ|. */
     unsigned int
     n_fracture_faces() const
     {
@@ -119,6 +135,7 @@ namespace PolyFrac
     Tensor<2, dim>
     frame(const unsigned int i) const;
 
+    /** Number of fractures. */
     unsigned int
     n_fractures() const
     {
@@ -132,7 +149,8 @@ namespace PolyFrac
     /** Geometric fractures (empty for tagged networks). */
     std::vector<Fracture<dim>> fractures;
     /** A readable name per fracture (its points, or its gmsh tag). */
-    std::vector<std::string>  names;
+    std::vector<std::string> names;
+    /** The fracture faces F_Γ, in the order of the mesh faces. */
     std::vector<FractureFace> fracture_faces;
 
   private:

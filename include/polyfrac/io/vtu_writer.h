@@ -34,6 +34,7 @@ namespace PolyFrac
                    const DoFMap<dim>          &dofs,
                    const Elasticity<dim>      &elasticity);
 
+  /** Writes the fracture faces to @p file_name (see above). */
   template <int dim>
   void
   write_fracture_vtu(const std::string                  &file_name,

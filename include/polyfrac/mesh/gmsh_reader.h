@@ -20,7 +20,7 @@ namespace PolyFrac
    * physical groups listed in `Fractures/Gmsh physical tags`.
    *
    * Each fracture element keeps the node order of gmsh, which fixes its n^+
-   * (the same convention as a planar Fracture, scheme.md §3):
+   * (the same convention as a planar Fracture, doc/scheme.md §3):
    * - 2D, line n0 -> n1: n^+ = (-(n1-n0)_y, (n1-n0)_x)/|n1-n0|, the left
    *   normal, so the + side lies to the right of n0 -> n1;
    * - 3D, triangle n0, n1, n2 (or quadrangle): the right-hand-rule normal

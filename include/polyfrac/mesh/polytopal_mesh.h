@@ -45,15 +45,20 @@ namespace PolyFrac
   class PolytopalMesh
   {
   public:
+    /** Marks a missing index: the second cell of a boundary face. */
     static constexpr unsigned int invalid = numbers::invalid_unsigned_int;
 
     /** A face: its vertex loop and its two cells. */
     struct Face
     {
-      std::vector<unsigned int>   vertices;
+      /** The vertex loop (2 vertices in 2D), its normal out of cells[0]. */
+      std::vector<unsigned int> vertices;
+      /** The two cells of the face; `cells[1] == invalid` at the boundary. */
       std::array<unsigned int, 2> cells = {{invalid, invalid}};
-      types::boundary_id boundary_id    = numbers::internal_face_boundary_id;
+      /** The deal.II boundary id (internal_face_boundary_id inside). */
+      types::boundary_id boundary_id = numbers::internal_face_boundary_id;
 
+      /** Whether the face lies on the boundary (has one cell only). */
       bool
       at_boundary() const
       {
@@ -64,16 +69,21 @@ namespace PolyFrac
     /** A polytope: its faces and (sorted) vertices. */
     struct Cell
     {
+      /** The faces of the polytope, as indices into PolytopalMesh::faces. */
       std::vector<unsigned int> faces;
+      /** The vertices of its faces, sorted and without repetition. */
       std::vector<unsigned int> vertices;
     };
 
     /** A cell of the underlying deal.II mesh, kept for output. */
     struct FineCell
     {
-      std::vector<unsigned int> vertices; // deal.II vertex order
-      ReferenceCell             type;
-      unsigned int              polytope;
+      /** Its vertices, in deal.II's vertex order. */
+      std::vector<unsigned int> vertices;
+      /** Its reference cell (quadrilateral, triangle, hexahedron, ...). */
+      ReferenceCell type;
+      /** The polytope it belongs to (an index into PolytopalMesh::cells). */
+      unsigned int polytope;
     };
 
     /** The polytopal view of the active cells of @p tria. */
@@ -91,12 +101,14 @@ namespace PolyFrac
     agglomerate(std::vector<unsigned int> part,
                 const std::vector<bool>  &keep_face) const;
 
+    /** Number of polytopes. */
     unsigned int
     n_cells() const
     {
       return cells.size();
     }
 
+    /** Number of faces (boundary, interior and fracture faces). */
     unsigned int
     n_faces() const
     {
@@ -118,10 +130,14 @@ namespace PolyFrac
     std::vector<std::vector<unsigned int>>
     vertex_to_cells() const;
 
+    /** The vertex coordinates (those of the deal.II triangulation). */
     std::vector<Point<dim>> vertices;
-    std::vector<Face>       faces;
-    std::vector<Cell>       cells;
-    std::vector<FineCell>   fine_cells;
+    /** The faces, each with its vertex loop and its two cells. */
+    std::vector<Face> faces;
+    /** The polytopes. */
+    std::vector<Cell> cells;
+    /** The active cells of the deal.II mesh, each with its polytope. */
+    std::vector<FineCell> fine_cells;
 
   private:
     void

@@ -9,10 +9,10 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
-#include <polyfrac/discretization/geometry.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 
 #include <memory>
 
@@ -21,7 +21,7 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * Linear elasticity with the bubble-VEM scheme (scheme.md §5) and a
+   * Linear elasticity with the bubble-VEM scheme (doc/scheme.md §5) and a
    * prescribed load on the fractures:
    *
    *   Σ_K |K| σ_K(u):ε_K(v) + Σ_K (2μ+λ) S_K(u, v)
@@ -42,6 +42,11 @@ namespace PolyFrac
   class Elasticity
   {
   public:
+    /**
+     * The problem of @p prm (material, loads, boundary data) on the mesh of
+     * @p geometry with the fractures of @p network and the unknowns of
+     * @p dofs; all four must outlive this object. Parses the expressions.
+     */
     Elasticity(const Parameters           &prm,
                const MeshGeometry<dim>    &geometry,
                const FractureNetwork<dim> &network,
@@ -86,6 +91,7 @@ namespace PolyFrac
     void
     make_constraints();
 
+    /** The Dirichlet constraints made by make_constraints(). */
     const AffineConstraints<double> &
     get_constraints() const
     {
@@ -107,6 +113,7 @@ namespace PolyFrac
     set_solution(const Vector<double>              &u,
                  const std::vector<Tensor<1, dim>> &multipliers);
 
+    /** The displacement: node sides, then bubbles (DoFMap numbering). */
     Vector<double> solution;
 
   private:

@@ -12,18 +12,25 @@ namespace PolyFrac
   /** One level of a convergence study: one row of convergence.csv. */
   struct ConvergenceRow
   {
-    unsigned int                level;
-    double                      h;
-    unsigned int                n_cells;
-    unsigned int                n_dofs;
-    Errors                      errors;
+    /** The refinement level. */
+    unsigned int level;
+    /** h, the largest polytope diameter. */
+    double h;
+    /** Number of polytopes. */
+    unsigned int n_cells;
+    /** Number of unknowns of the linear system. */
+    unsigned int n_dofs;
+    /** The errors against the exact fields that are given. */
+    Errors errors;
+    /** Newton iterations of the level (contact mechanics only). */
     std::optional<unsigned int> newton_iterations;
-    double                      wall_seconds;
+    /** Wall time of the level, in seconds. */
+    double wall_seconds;
   };
 
   /**
    * The observed order of an error column between two consecutive levels,
-   * log(e_{k-1}/e_k) / log(h_{k-1}/h_k) (scheme.md §8), or nothing when it
+   * log(e_{k-1}/e_k) / log(h_{k-1}/h_k) (doc/scheme.md §8), or nothing when it
    * is undefined: the column is missing, an error is not positive, or the
    * two levels have the same h.
    */

@@ -17,12 +17,15 @@ namespace PolyFrac
   /** A relative error, or an absolute one where the exact field vanishes. */
   struct ErrorValue
   {
+    /** The error. */
     double value;
-    bool   absolute;
+    /** Whether @p value is absolute (the norm of the exact field is below
+     * 1e-14) rather than relative. */
+    bool absolute;
   };
 
   /**
-   * The error measures of scheme.md §8 (the columns of convergence.csv),
+   * The error measures of doc/scheme.md §8 (the columns of convergence.csv),
    * each present only when its exact field is given:
    * - err_u = ‖u − Π^D u_D‖ / ‖u‖ and err_grad_u = ‖∇u − ∇^D u_D‖ / ‖∇u‖,
    *   integrated on the fan sub-simplices with a degree-2 interior rule
@@ -36,7 +39,16 @@ namespace PolyFrac
    */
   struct Errors
   {
-    std::optional<ErrorValue> u, grad_u, jump, lambda_hm12, lambda_l2;
+    /** err_u. */
+    std::optional<ErrorValue> u;
+    /** err_grad_u. */
+    std::optional<ErrorValue> grad_u;
+    /** err_jump. */
+    std::optional<ErrorValue> jump;
+    /** err_lambda_hm12. */
+    std::optional<ErrorValue> lambda_hm12;
+    /** err_lambda_l2. */
+    std::optional<ErrorValue> lambda_l2;
   };
 
   /** An error column of convergence.csv: its name and its member of Errors. */
@@ -47,6 +59,8 @@ namespace PolyFrac
   const std::vector<ErrorColumn> &
   error_columns();
 
+  /** The Errors of the solution in @p elasticity against the exact fields
+   * of @p prm. */
   template <int dim>
   Errors
   compute_errors(const Parameters           &prm,
@@ -63,8 +77,11 @@ namespace PolyFrac
    */
   struct MaximumOpening
   {
-    double                value;
-    unsigned int          face;
+    /** The largest opening −[[u_D]]_σ·n^+. */
+    double value;
+    /** The fracture face where it is (an index into the fracture faces). */
+    unsigned int face;
+    /** The exact opening −[u](x̄_σ)·n^+ there, if the exact jump is given. */
     std::optional<double> exact;
   };
 

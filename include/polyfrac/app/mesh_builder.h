@@ -1,5 +1,5 @@
-#ifndef polyfrac_mesh_mesh_builder_h
-#define polyfrac_mesh_mesh_builder_h
+#ifndef polyfrac_app_mesh_builder_h
+#define polyfrac_app_mesh_builder_h
 
 #include <deal.II/grid/tria.h>
 
@@ -14,7 +14,7 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * The mesh pipeline of one refinement level (scheme.md §3-4, issue
+   * The mesh pipeline of one refinement level (doc/scheme.md §3-4, issue
    * "Foundation"): a deal.II triangulation (generated box or gmsh), refined
    * `Global refinements + level` times, then `Local refinements` times in
    * the local refinement box; its polytopal view; vertex distortion; METIS

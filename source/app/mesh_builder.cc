@@ -7,7 +7,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
-#include <polyfrac/mesh/mesh_builder.h>
+#include <polyfrac/app/mesh_builder.h>
 
 #include <random>
 

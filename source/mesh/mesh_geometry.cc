@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <polyfrac/discretization/geometry.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 
 #include <algorithm>
 #include <iomanip>

@@ -1,5 +1,5 @@
-#ifndef polyfrac_discretization_geometry_h
-#define polyfrac_discretization_geometry_h
+#ifndef polyfrac_mesh_mesh_geometry_h
+#define polyfrac_mesh_mesh_geometry_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -14,7 +14,7 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * Vector area N of the face with vertex loop @p loop (scheme.md §4):
+   * Vector area N of the face with vertex loop @p loop (doc/scheme.md §4):
    * 3D: the sum over the fan triangles T_e = (s1, s2, x^v) of
    * (s1 - x^v) x (s2 - x^v) / 2; 2D: |σ| times the right normal of
    * s1 -> s2. Equals |σ| n on a planar face.
@@ -35,8 +35,10 @@ namespace PolyFrac
   template <int dim>
   struct FanPiece
   {
-    Tensor<1, dim>      area;
-    std::vector<double> weights; // one per vertex of the face loop
+    /** Vector area of the piece, oriented out of the cell. */
+    Tensor<1, dim> area;
+    /** Weights of the trace mean, one per vertex of the face loop. */
+    std::vector<double> weights;
   };
 
   /** The fan of face @p loop, oriented by @p sign (+1: as the loop). */
@@ -55,18 +57,24 @@ namespace PolyFrac
   template <int dim>
   struct FaceGeometry
   {
-    double              measure;
-    Point<dim>          centroid;
-    Tensor<1, dim>      vector_area;
-    Tensor<1, dim>      normal;
-    double              diameter;
-    std::vector<double> weights; // per vertex of the loop
+    /** |σ| = |N_σ|. */
+    double measure;
+    /** x̄_σ = Σ_s ω_s^σ x_s. */
+    Point<dim> centroid;
+    /** N_σ (face_vector_area()), oriented like the loop. */
+    Tensor<1, dim> vector_area;
+    /** Unit normal N_σ/|N_σ|. */
+    Tensor<1, dim> normal;
+    /** h_σ, the largest distance between two vertices of σ. */
+    double diameter;
+    /** ω_s^σ, one per vertex of the loop; they sum to 1. */
+    std::vector<double> weights;
   };
 
   /**
    * Geometry of a polytope K: the signed measure |K| (sum over the fan
    * sub-simplices: 2D (s1, s2, x^v_K), 3D (s1, s2, x^v_σ, x^v_K)), the
-   * weights ω_s^K of scheme.md §4, the centroid x̄_K = Σ_s ω_s^K x_s, the
+   * weights ω_s^K of doc/scheme.md §4, the centroid x̄_K = Σ_s ω_s^K x_s, the
    * diameter h_K and the gradient coefficients g_s such that the nodal
    * part of the cell gradient is ∇^K v = Σ_s v_s ⊗ g_s (exact integral of
    * the fan-wise affine trace over ∂K, divided by |K|).
@@ -76,20 +84,28 @@ namespace PolyFrac
   template <int dim>
   struct CellGeometry
   {
-    double                      measure;
-    Point<dim>                  centroid;
-    Point<dim>                  vertex_average;
-    double                      diameter;
-    std::vector<double>         weights;   // per cell vertex (sorted order)
-    std::vector<Tensor<1, dim>> gradients; // g_s, per cell vertex
+    /** |K|, signed (positive on a valid mesh). */
+    double measure;
+    /** x̄_K = Σ_s ω_s^K x_s. */
+    Point<dim> centroid;
+    /** x^v_K, the average of the vertices: the apex of the fan. */
+    Point<dim> vertex_average;
+    /** h_K, the largest distance between two vertices of K. */
+    double diameter;
+    /** ω_s^K, per cell vertex (in the sorted order of Cell::vertices). */
+    std::vector<double> weights;
+    /** g_s, per cell vertex (same order). */
+    std::vector<Tensor<1, dim>> gradients;
   };
 
   /** A quadrature point of a polytope (on its fan sub-simplices). */
   template <int dim>
   struct QuadraturePoint
   {
+    /** Position of the point. */
     Point<dim> point;
-    double     weight;
+    /** Weight (the weights of a cell sum to |K|). */
+    double weight;
   };
 
   /**
@@ -99,6 +115,10 @@ namespace PolyFrac
   class MeshGeometry
   {
   public:
+    /**
+     * Computes the face and cell geometry of @p mesh, which must outlive
+     * this object. Throws if a face has zero measure.
+     */
     explicit MeshGeometry(const PolytopalMesh<dim> &mesh);
 
     /**
@@ -121,8 +141,11 @@ namespace PolyFrac
     double
     max_diameter() const;
 
-    const PolytopalMesh<dim>      &mesh;
+    /** The mesh described. */
+    const PolytopalMesh<dim> &mesh;
+    /** Geometry of each face of the mesh. */
     std::vector<FaceGeometry<dim>> faces;
+    /** Geometry of each polytope of the mesh. */
     std::vector<CellGeometry<dim>> cells;
   };
 } // namespace PolyFrac
