@@ -167,6 +167,8 @@ namespace PolyFrac
     {
       std::string directory;
       bool        write_vtu;
+      /** zlib level of the VTU data: "best", "fast" or "none". */
+      std::string vtu_compression;
       bool        print_timings;
     } output;
 
