@@ -25,6 +25,11 @@ namespace PolyFrac
   template <int dim, int spacedim>
   struct PatchData
   {
+    /**
+     * The patches, ordered along the Hilbert curve through their centres
+     * (not in the order of the cells: zlib then compresses the copies of
+     * shared vertices).
+     */
     std::vector<DataOutBase::Patch<dim, spacedim>> patches;
     /** One name per data component. */
     std::vector<std::string> names;
@@ -79,9 +84,10 @@ namespace PolyFrac
    * digits) and `name.pvd` lists every step with its time.
    *
    * @code
-   *   VtuSeries series(directory, "solution-level-0",
-   * VtkFlags::best_compression); series.write(matrix_patches(geometry, network,
-   * dofs, elasticity), 0.);
+   *   VtuSeries series(directory,
+   *                    "solution-level-0",
+   *                    DataOutBase::VtkFlags::best_compression);
+   *   series.write(matrix_patches(geometry, network, dofs, elasticity), 0.);
    * @endcode
    */
   class VtuSeries
