@@ -10,9 +10,10 @@
 #   dim cells n_cells n_dofs solver asm_s solve_s cells/s CG peak_MB err_grad_u
 #
 # n_dofs are the unknowns of the linear system (Dirichlet dofs excluded), as
-# in convergence.csv; asm_s and solve_s come from the program's
-# "Wall time: ..." line (solve_s includes the AMG setup); cells/s is n_cells
-# over asm_s; peak_MB is the maximum resident set size from /usr/bin/time -v.
+# in convergence.csv; asm_s and solve_s come from the rows assembly and
+# solve of the program's timing table (solve_s includes the AMG setup);
+# cells/s is n_cells over asm_s; peak_MB is the maximum resident set size
+# from /usr/bin/time -v.
 # The default set takes about 9 minutes on 2 cores, --quick under one.
 #
 # usage: benchmarks/run_benchmarks.sh [--quick] [--repeats R] [--keep]
@@ -119,9 +120,10 @@ median() {
   sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 
-# field LOG WORD: the number after WORD on the program's "Wall time:" line.
+# field LOG SECTION: the wall time of SECTION in the program's timing table
+# (deal.II's TimerOutput: "| SECTION | calls | 1.23s | 45% |").
 field() {
-  sed -n "s/^Wall time:.*$2 \([0-9.eE+-]*\) s.*/\1/p" "$1"
+  sed -n "s/^| $2 *| *[0-9]* | *\([0-9.eE+-]*\)s |.*/\1/p" "$1"
 }
 
 echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores" \

@@ -172,15 +172,26 @@ namespace PolyFrac
       out << "Warning: " << warning << std::endl;
     std::filesystem::create_directories(prm.output.directory);
     prm.write_used_parameters(prm.output.directory + "/used_parameters.prm");
+    written_files = {"used_parameters.prm"};
 
+    // Wall times per section, summed over the levels; printed only on
+    // request, since tests diff the output.
+    TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
     for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
       {
-        rows.push_back(run_level(level, out));
+        rows.push_back(run_level(level, timer, out));
         std::ofstream csv(prm.output.directory + "/convergence.csv");
         write_convergence_table(csv, rows, false, true);
       }
+    written_files.push_back("convergence.csv");
     out << std::endl;
     write_convergence_table(out, rows);
+    if (prm.output.print_timings)
+      timer.print_summary();
+    out << "\nFiles written in " << prm.output.directory << ':';
+    for (const std::string &name : written_files)
+      out << ' ' << name;
+    out << std::endl;
     report_checks(out);
   }
 
@@ -211,34 +222,43 @@ namespace PolyFrac
 
   template <int dim>
   ConvergenceRow
-  Simulator<dim>::run_level(const unsigned int level, std::ostream &out)
+  Simulator<dim>::run_level(const unsigned int level,
+                            TimerOutput       &timer,
+                            std::ostream      &out)
   {
-    Timer                          timer;
+    Timer wall;
+    timer.enter_subsection("mesh");
     const LevelDiscretization<dim> discretization(prm, level);
-    const auto                    &geometry = *discretization.geometry;
-    const auto                    &network  = *discretization.network;
-    const auto                    &dofs     = *discretization.dofs;
+    timer.leave_subsection();
+    const auto &geometry = *discretization.geometry;
+    const auto &network  = *discretization.network;
+    const auto &dofs     = *discretization.dofs;
 
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
 
-    const double                           setup_time = timer.wall_time();
     std::unique_ptr<Elasticity<dim>>       elasticity;
     std::unique_ptr<ContactMechanics<dim>> contact;
     std::optional<unsigned int>            newton_iterations;
     types::global_dof_index                n_unknowns;
     if (prm.model == "contact mechanics")
       {
+        // The constructor assembles the elasticity operator.
+        timer.enter_subsection("assembly");
         contact =
           std::make_unique<ContactMechanics<dim>>(prm, geometry, network, dofs);
+        timer.leave_subsection();
+        timer.enter_subsection("solve");
         if (previous_multipliers &&
             prm.nonlinear.initial_guess == "previous level")
           contact->start_from(*previous_multipliers);
         contact->solve(out);
+        timer.leave_subsection();
         previous_multipliers = contact->multiplier_field();
         newton_iterations    = contact->n_newton_iterations();
         n_unknowns           = contact->n_unknowns();
         out << "Newton iterations: " << *newton_iterations << std::endl;
+        timer.enter_subsection("postprocessing");
         if (const auto opening = maximum_opening(prm,
                                                  geometry,
                                                  network,
@@ -257,51 +277,87 @@ namespace PolyFrac
                   << opening->value / *opening->exact << ")";
             out << std::defaultfloat << std::setprecision(6) << std::endl;
           }
+        timer.leave_subsection();
       }
     else
       {
+        timer.enter_subsection("assembly");
         elasticity =
           std::make_unique<Elasticity<dim>>(prm, geometry, network, dofs);
         elasticity->assemble();
+        timer.leave_subsection();
+        timer.enter_subsection("solve");
         const unsigned int iterations = elasticity->solve();
-        n_unknowns                    = elasticity->n_unknowns();
+        timer.leave_subsection();
+        n_unknowns = elasticity->n_unknowns();
         if (prm.solver.method == "AMG")
           out << "CG iterations: " << iterations << std::endl;
       }
     const Elasticity<dim> &mechanics =
       contact ? contact->displacement() : *elasticity;
-    const double wall = timer.wall_time();
-    if (prm.output.print_timings)
-      out << "Wall time: mesh " << setup_time << " s, assembly and solve "
-          << wall - setup_time << " s" << std::endl;
+    const double wall_seconds = wall.wall_time();
 
+    timer.enter_subsection("postprocessing");
     ConvergenceRow row{level,
                        geometry.max_diameter(),
                        geometry.mesh.n_cells(),
                        static_cast<unsigned int>(n_unknowns),
                        compute_errors(prm, geometry, network, dofs, mechanics),
                        newton_iterations,
-                       wall};
+                       wall_seconds};
+    timer.leave_subsection();
 
     if (prm.output.write_vtu)
       {
-        const std::string suffix = "-level-" + std::to_string(level) + ".vtu";
-        write_matrix_vtu(prm.output.directory + "/solution" + suffix,
-                         geometry,
-                         network,
-                         dofs,
-                         mechanics);
-        if (network.n_fracture_faces() > 0)
-          write_fracture_vtu(prm.output.directory + "/fractures" + suffix,
-                             geometry,
-                             network,
-                             mechanics,
-                             contact ? contact->normal_state :
-                                       std::vector<NormalState>(),
-                             contact ? contact->tangential_state :
-                                       std::vector<TangentialState>());
+        TimerOutput::Scope section(timer, "output");
+        write_vtu(level, discretization, mechanics, contact.get());
       }
     return row;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_vtu(const unsigned int                 level,
+                            const LevelDiscretization<dim>    &discretization,
+                            const Elasticity<dim>             &mechanics,
+                            const ContactMechanics<dim> *const contact)
+  {
+    const auto        compression = prm.output.vtu_compression == "best" ?
+                                      DataOutBase::VtkFlags::best_compression :
+                                      (prm.output.vtu_compression == "fast" ?
+                                         DataOutBase::VtkFlags::best_speed :
+                                         DataOutBase::VtkFlags::no_compression);
+    const std::string level_name  = "-level-" + std::to_string(level);
+    const auto       &geometry    = *discretization.geometry;
+    const auto       &network     = *discretization.network;
+
+    VtuSeries solution(prm.output.directory,
+                       "solution" + level_name,
+                       compression);
+    solution.write(
+      matrix_patches(geometry, network, *discretization.dofs, mechanics), 0.);
+    for (const std::string &name : solution.file_names())
+      written_files.push_back(name);
+
+    if (network.n_fracture_faces() > 0)
+      {
+        VtuSeries fractures(prm.output.directory,
+                            "fractures" + level_name,
+                            compression);
+        fractures.write(fracture_patches(geometry,
+                                         network,
+                                         mechanics,
+                                         contact ? contact->normal_state :
+                                                   std::vector<NormalState>(),
+                                         contact ?
+                                           contact->tangential_state :
+                                           std::vector<TangentialState>()),
+                        0.);
+        for (const std::string &name : fractures.file_names())
+          written_files.push_back(name);
+      }
   }
 
 

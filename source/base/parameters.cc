@@ -429,12 +429,22 @@ namespace PolyFrac
     prm.declare_entry("Write VTU",
                       "true",
                       Patterns::Bool(),
-                      "Write the matrix and fracture VTU files of each level.");
+                      "Write the matrix and fracture VTU files of each level "
+                      "and their .pvd records.");
+    prm.declare_entry(
+      "VTU compression",
+      "best",
+      Patterns::Selection("best|fast|none"),
+      "zlib compression of the VTU data: best (smallest files), fast "
+      "(quicker to write, larger), none. deal.II 9.4 writes the data "
+      "base64-encoded in every case: there is no ASCII VTU.");
     prm.declare_entry("Print timings",
                       "true",
                       Patterns::Bool(),
-                      "Print wall times on screen (tests switch this off; "
-                      "convergence.csv always has them).");
+                      "Print the table of wall times per section (mesh, "
+                      "assembly, solve, postprocessing, output) at the end "
+                      "(tests switch this off; convergence.csv always has "
+                      "the wall time of each level).");
     prm.leave_subsection();
   }
 
@@ -721,9 +731,10 @@ namespace PolyFrac
     prm->leave_subsection();
 
     prm->enter_subsection("Output");
-    output.directory     = prm->get("Output directory");
-    output.write_vtu     = prm->get_bool("Write VTU");
-    output.print_timings = prm->get_bool("Print timings");
+    output.directory       = prm->get("Output directory");
+    output.write_vtu       = prm->get_bool("Write VTU");
+    output.vtu_compression = prm->get("VTU compression");
+    output.print_timings   = prm->get_bool("Print timings");
     prm->leave_subsection();
 
     warn_unused_entries();

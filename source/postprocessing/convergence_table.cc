@@ -1,3 +1,5 @@
+#include <deal.II/base/convergence_table.h>
+
 #include <polyfrac/postprocessing/convergence_table.h>
 
 #include <cmath>
@@ -6,6 +8,34 @@
 
 namespace PolyFrac
 {
+  namespace
+  {
+    void
+    write_csv(std::ostream &out, const std::vector<ConvergenceRow> &rows)
+    {
+      out << "level,h,n_cells,n_dofs,err_u,err_grad_u,err_jump,"
+             "err_lambda_hm12,err_lambda_l2,newton_iterations,wall_seconds\n";
+      out << std::setprecision(8);
+      for (const ConvergenceRow &row : rows)
+        {
+          out << row.level << ',' << row.h << ',' << row.n_cells << ','
+              << row.n_dofs;
+          for (const auto &[name, member] : error_columns())
+            {
+              out << ',';
+              if (row.errors.*member)
+                out << (row.errors.*member)->value;
+            }
+          out << ',';
+          if (row.newton_iterations)
+            out << *row.newton_iterations;
+          out << ',' << row.wall_seconds << '\n';
+        }
+    }
+  } // namespace
+
+
+
   std::optional<double>
   observed_rate(const ConvergenceRow     &coarse,
                 const ConvergenceRow     &fine,
@@ -30,65 +60,49 @@ namespace PolyFrac
                           const bool                         with_rates,
                           const bool                         csv)
   {
-    const std::vector<ErrorColumn> &columns = error_columns();
     if (csv)
       {
-        out << "level,h,n_cells,n_dofs,err_u,err_grad_u,err_jump,"
-               "err_lambda_hm12,err_lambda_l2,newton_iterations,wall_seconds\n";
-        out << std::setprecision(8);
-        for (const ConvergenceRow &row : rows)
-          {
-            out << row.level << ',' << row.h << ',' << row.n_cells << ','
-                << row.n_dofs;
-            for (const auto &[name, member] : columns)
-              {
-                out << ',';
-                if (row.errors.*member)
-                  out << (row.errors.*member)->value;
-              }
-            out << ',';
-            if (row.newton_iterations)
-              out << *row.newton_iterations;
-            out << ',' << row.wall_seconds << '\n';
-          }
+        write_csv(out, rows);
         return;
       }
+    if (rows.empty())
+      return;
 
-    out << std::left << std::setw(6) << "level" << std::setw(12) << "h"
-        << std::setw(10) << "n_cells" << std::setw(10) << "n_dofs";
-    for (const auto &[name, member] : columns)
-      if (!rows.empty() && rows[0].errors.*member)
-        {
-          out << std::setw(22)
-              << name + ((rows[0].errors.*member)->absolute ? "(abs)" : "");
-          if (with_rates)
-            out << std::setw(7) << "rate";
-        }
-    out << '\n';
-    for (unsigned int r = 0; r < rows.size(); ++r)
+    // The rates are taken against 1/h: reduction_rate_log2 with dimension
+    // 1 gives log(e_{k-1}/e_k) / log((1/h_k)/(1/h_{k-1})), the order in h.
+    ConvergenceTable         table;
+    std::vector<std::string> order = {"level", "h", "n_cells", "n_dofs"};
+    for (const ConvergenceRow &row : rows)
       {
-        const ConvergenceRow &row = rows[r];
-        out << std::setw(6) << row.level << std::setw(12)
-            << std::setprecision(5) << row.h << std::setw(10) << row.n_cells
-            << std::setw(10) << row.n_dofs;
-        for (const auto &[name, member] : columns)
-          if (row.errors.*member)
-            {
-              out << std::setw(22) << std::scientific << std::setprecision(5)
-                  << (row.errors.*member)->value << std::defaultfloat;
-              if (with_rates)
-                {
-                  if (const std::optional<double> rate =
-                        r == 0 ? std::nullopt :
-                                 observed_rate(rows[r - 1], row, member))
-                    out << std::setw(7) << std::fixed << std::setprecision(2)
-                        << *rate << std::defaultfloat;
-                  else
-                    out << std::setw(7) << "-";
-                }
-            }
-        out << '\n';
+        table.add_value("level", row.level);
+        table.add_value("h", row.h);
+        table.add_value("1/h", 1. / row.h);
+        table.add_value("n_cells", row.n_cells);
+        table.add_value("n_dofs", row.n_dofs);
       }
-    out << std::right;
+    table.set_precision("h", 5);
+    for (const auto &[name, member] : error_columns())
+      {
+        if (!(rows[0].errors.*member))
+          continue;
+        const std::string key =
+          name + ((rows[0].errors.*member)->absolute ? "(abs)" : "");
+        bool positive = true;
+        for (const ConvergenceRow &row : rows)
+          {
+            table.add_value(key, (row.errors.*member)->value);
+            positive = positive && (row.errors.*member)->value > 0;
+          }
+        table.set_scientific(key, true);
+        table.set_precision(key, 5);
+        // An error that vanishes on some level has no order.
+        if (with_rates && positive)
+          table.evaluate_convergence_rates(
+            key, "1/h", ConvergenceTable::reduction_rate_log2, 1);
+        order.push_back(key);
+      }
+    // The columns of `order` only: 1/h is left out.
+    table.set_column_order(order);
+    table.write_text(out);
   }
 } // namespace PolyFrac

@@ -1,6 +1,8 @@
 #ifndef polyfrac_app_simulator_h
 #define polyfrac_app_simulator_h
 
+#include <deal.II/base/timer.h>
+
 #include <deal.II/grid/tria.h>
 
 #include <polyfrac/base/parameters.h>
@@ -51,10 +53,12 @@ namespace PolyFrac
 
   /**
    * The PolyFrac program: runs the scene of a parameter file on each level
-   * of the convergence study, writes the VTU files, `convergence.csv` and
-   * the used parameters to the output directory, and prints the
-   * convergence table with the observed rates; stops with an error when a
-   * check of the convergence study (Maximum errors, Minimum rates) fails.
+   * of the convergence study, writes the VTU files and their `.pvd`
+   * records, `convergence.csv` and the used parameters to the output
+   * directory, and prints the convergence table with the observed rates,
+   * the table of wall times per section (`Output/Print timings`) and the
+   * line naming the files written; stops with an error when a check of
+   * the convergence study (Maximum errors, Minimum rates) fails.
    */
   template <int dim>
   class Simulator
@@ -69,8 +73,19 @@ namespace PolyFrac
     run(std::ostream &out);
 
   private:
+    /** Runs one level; @p timer gets its sections. */
     ConvergenceRow
-    run_level(const unsigned int level, std::ostream &out);
+    run_level(const unsigned int level, TimerOutput &timer, std::ostream &out);
+
+    /**
+     * Writes the matrix and fracture VTU series of @p level (one step, at
+     * t = 0) and records their files.
+     */
+    void
+    write_vtu(const unsigned int                 level,
+              const LevelDiscretization<dim>    &discretization,
+              const Elasticity<dim>             &mechanics,
+              const ContactMechanics<dim> *const contact);
 
     /**
      * Prints how many checks of Convergence study/Maximum errors and
@@ -81,6 +96,8 @@ namespace PolyFrac
 
     const Parameters           &prm;
     std::vector<ConvergenceRow> rows;
+    /** The files written to the output directory, in order. */
+    std::vector<std::string> written_files;
     /** The multipliers of the last level (contact mechanics). */
     std::optional<MultiplierField<dim>> previous_multipliers;
   };

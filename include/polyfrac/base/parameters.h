@@ -223,6 +223,9 @@ namespace PolyFrac
       std::string directory;
       /** Write VTU: whether the solution files are written. */
       bool write_vtu;
+      /** VTU compression: zlib level of the VTU data, "best", "fast" or
+       * "none". */
+      std::string vtu_compression;
       /** Print timings: whether the timing table is printed. */
       bool print_timings;
     } output; /**< The subsection Output. */

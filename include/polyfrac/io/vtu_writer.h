@@ -1,48 +1,124 @@
 #ifndef polyfrac_io_vtu_writer_h
 #define polyfrac_io_vtu_writer_h
 
+#include <deal.II/base/data_out_base.h>
+
+#include <deal.II/numerics/data_component_interpretation.h>
+
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
 
 #include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace PolyFrac
 {
   using namespace dealii;
 
   /**
-   * VTU output for ParaView (ASCII, deterministic).
-   *
-   * write_matrix_vtu(): the cells of the underlying deal.II mesh, each with
-   * its own copy of its vertices, so the displacement, a node-side field,
-   * shows its jump across the fractures. A vertex of the fine cell that is
-   * a vertex of its polytope gets the node-side value u_{Ks}; any other
-   * (inside an agglomerate) gets Π^K u. Cell data: polytope index and the
-   * stress σ_K (a symmetric tensor, padded to 3x3 in 2D).
-   *
-   * write_fracture_vtu(): the fracture faces (segments or polygons) with
-   * cell data: fracture index, n^+, the jump [u] (global), its normal part
-   * [u]_n = [u]·n^+ and tangential part [u]_τ, the traction λ (global), λ_n
-   * and λ_τ; with contact, the states `normal_state` (0 open, 1 contact)
-   * and `tangential_state` (0 stick, 1 slip, 2 free: no friction acts).
+   * Patches for DataOutBase with the names of their data components and
+   * the component ranges that form vectors and tensors, as
+   * DataOutBase::write_vtu() takes them.
+   */
+  template <int dim, int spacedim>
+  struct PatchData
+  {
+    /**
+     * The patches, ordered along the Hilbert curve through their centres
+     * (not in the order of the cells: zlib then compresses the copies of
+     * shared vertices).
+     */
+    std::vector<DataOutBase::Patch<dim, spacedim>> patches;
+    /** One name per data component. */
+    std::vector<std::string> names;
+    /** First and last component, name and kind of each vector or tensor. */
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+      ranges;
+  };
+
+  /**
+   * The matrix output: one patch per cell of the underlying deal.II mesh
+   * (vertices in deal.II order), so each cell has its own copy of its
+   * vertices and the displacement, a node-side field, shows its jump
+   * across the fractures. A vertex of the fine cell that is a vertex of
+   * its polytope K gets the node-side value u_{Ks}; any other (inside an
+   * agglomerate) gets Π^K u. `polytope` (the index of K) and `stress` (σ_K,
+   * a tensor) are constant over the patch.
    */
   template <int dim>
-  void
-  write_matrix_vtu(const std::string          &file_name,
-                   const MeshGeometry<dim>    &geometry,
-                   const FractureNetwork<dim> &network,
-                   const DoFMap<dim>          &dofs,
-                   const Elasticity<dim>      &elasticity);
+  PatchData<dim, dim>
+  matrix_patches(const MeshGeometry<dim>    &geometry,
+                 const FractureNetwork<dim> &network,
+                 const DoFMap<dim>          &dofs,
+                 const Elasticity<dim>      &elasticity);
 
-  /** Writes the fracture faces to @p file_name (see above). */
+  /**
+   * The fracture output: patches of dimension dim-1, one per fracture face
+   * (a segment in 2D; in 3D a triangle, a quadrilateral, or for a polygon
+   * with more vertices the fan of triangles (s1, s2, x^v_σ) of its edges
+   * around the vertex average), each with constant data: `fracture`,
+   * `n_plus`, the jump [u] (`jump`, global components), `normal_jump` [u]·n^+
+   * and `tangential_jump`, the traction λ (`traction`), `normal_traction` and
+   * `tangential_traction`; with contact (@p normal_state given)
+   * `normal_state` (0 open, 1 contact) and `tangential_state` (0 stick, 1
+   * slip, 2 free: no friction acts).
+   */
   template <int dim>
-  void
-  write_fracture_vtu(const std::string                  &file_name,
-                     const MeshGeometry<dim>            &geometry,
-                     const FractureNetwork<dim>         &network,
-                     const Elasticity<dim>              &elasticity,
-                     const std::vector<NormalState>     &normal_state     = {},
-                     const std::vector<TangentialState> &tangential_state = {});
+  PatchData<dim - 1, dim>
+  fracture_patches(const MeshGeometry<dim>            &geometry,
+                   const FractureNetwork<dim>         &network,
+                   const Elasticity<dim>              &elasticity,
+                   const std::vector<NormalState>     &normal_state     = {},
+                   const std::vector<TangentialState> &tangential_state = {});
+
+  /**
+   * A series of VTU files over one time axis and its `.pvd` record, written
+   * through DataOutBase without dates, so that the same run writes the same
+   * bytes: step n of series `name` goes to `name-NNNN.vtu` (n on four
+   * digits) and `name.pvd` lists every step with its time.
+   *
+   * @code
+   *   VtuSeries series(directory,
+   *                    "solution-level-0",
+   *                    DataOutBase::VtkFlags::best_compression);
+   *   series.write(matrix_patches(geometry, network, dofs, elasticity), 0.);
+   * @endcode
+   */
+  class VtuSeries
+  {
+  public:
+    /**
+     * A series written to @p directory with the zlib @p compression of the
+     * binary VTU data.
+     */
+    VtuSeries(const std::string                                &directory,
+              const std::string                                &name,
+              const DataOutBase::VtkFlags::ZlibCompressionLevel compression);
+
+    /**
+     * Writes @p data as the next step, at @p time, and rewrites the `.pvd`
+     * record.
+     */
+    template <int dim, int spacedim>
+    void
+    write(const PatchData<dim, spacedim> &data, const double time);
+
+    /** The files written so far: the VTU file of each step, the record. */
+    std::vector<std::string>
+    file_names() const;
+
+  private:
+    std::string                                 directory;
+    std::string                                 name;
+    DataOutBase::VtkFlags                       flags;
+    std::vector<std::pair<double, std::string>> times_and_names;
+  };
 } // namespace PolyFrac
 
 #endif

@@ -41,10 +41,12 @@ namespace PolyFrac
 
   /**
    * Writes @p rows either as convergence.csv (@p csv: every column, empty
-   * where an exact field is not given) or as the table the programs print:
-   * the given errors with six significant digits and, if @p with_rates,
-   * the observed orders log(e_{k-1}/e_k)/log(h_{k-1}/h_k). A column marked
-   * "(abs)" holds absolute errors (its exact field vanishes).
+   * where an exact field is not given) or as the table the programs print,
+   * through deal.II's ConvergenceTable: the given errors with six
+   * significant digits and, if @p with_rates, next to each the observed
+   * orders log(e_{k-1}/e_k)/log(h_{k-1}/h_k) (none for an error that
+   * vanishes on some level). A column marked "(abs)" holds absolute errors
+   * (its exact field vanishes).
    */
   void
   write_convergence_table(std::ostream                      &out,
