@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <polyfrac/app/simulator.h>
+#include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/mesh/gmsh_reader.h>
@@ -134,8 +135,9 @@ namespace PolyFrac
       }
 
     geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
-    network  = make_network(*geometry);
-    dofs     = std::make_unique<DoFMap<dim>>(*mesh, *network);
+    MeshBuilder::check_weights(prm, *geometry);
+    network = make_network(*geometry);
+    dofs    = std::make_unique<DoFMap<dim>>(*mesh, *network);
   }
 
 
@@ -169,7 +171,8 @@ namespace PolyFrac
   {
     for (const std::string &warning : prm.warnings)
       out << "Warning: " << warning << std::endl;
-    std::filesystem::create_directories(prm.output.directory);
+    check_memory(prm);
+    prm.create_output_directory();
     prm.write_used_parameters(prm.output.directory + "/used_parameters.prm");
 
     for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)

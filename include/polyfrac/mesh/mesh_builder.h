@@ -63,6 +63,16 @@ namespace PolyFrac
     agglomerate(const Parameters         &prm,
                 const std::vector<bool>  &fracture_face,
                 const PolytopalMesh<dim> &mesh);
+
+    /**
+     * Throws if a weight ω of @p geometry (face or cell, scheme.md §4) is
+     * negative: the polytopes are too far from star-shaped for the
+     * reconstructions. The message names the smallest weights and suggests
+     * fewer Cells per polytope (or less Distortion).
+     */
+    template <int dim>
+    void
+    check_weights(const Parameters &prm, const MeshGeometry<dim> &geometry);
   } // namespace MeshBuilder
 } // namespace PolyFrac
 
