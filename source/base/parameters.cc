@@ -228,19 +228,25 @@ namespace PolyFrac
       return dim;
     }
 
-    /** The text of a deal.II parameter exception without its "Line <n> of
-     * file <f>:" prefix and the layout of its message. */
+    /** The text of a deal.II exception on one line (deal.II lays out
+     * pattern mismatches over several lines). */
     std::string
-    reason(const ExceptionBase &e)
+    one_line(const ExceptionBase &e)
     {
       std::ostringstream info;
       e.print_info(info);
-      std::string text =
-        std::regex_replace(info.str(),
-                           std::regex(R"(^\s*Line <\d+> of file <[^>]*>:\s*)"),
-                           "");
       return Utilities::trim(
-        std::regex_replace(text, std::regex(R"(\s+)"), " "));
+        std::regex_replace(info.str(), std::regex(R"(\s+)"), " "));
+    }
+
+    /** The text of a deal.II parameter exception without its "Line <n> of
+     * file <f>:" prefix (an override has no file). */
+    std::string
+    reason(const ExceptionBase &e)
+    {
+      return std::regex_replace(one_line(e),
+                                std::regex(R"(^Line <\d+> of file <[^>]*>: )"),
+                                "");
     }
   } // namespace
 
@@ -576,11 +582,8 @@ namespace PolyFrac
       }
     catch (const ExceptionBase &e)
       {
-        std::ostringstream info;
-        e.print_info(info);
         AssertThrow(false,
-                    ExcMessage("Invalid parameter file: " +
-                               Utilities::trim(info.str())));
+                    ExcMessage("Invalid parameter file: " + one_line(e)));
       }
     for (const std::string &entry : overrides)
       apply_override(entry);
