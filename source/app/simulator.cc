@@ -135,9 +135,8 @@ namespace PolyFrac
       }
 
     geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
-    MeshBuilder::check_weights(prm, *geometry);
-    network = make_network(*geometry);
-    dofs    = std::make_unique<DoFMap<dim>>(*mesh, *network);
+    network  = make_network(*geometry);
+    dofs     = std::make_unique<DoFMap<dim>>(*mesh, *network);
   }
 
 
@@ -199,6 +198,7 @@ namespace PolyFrac
 
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
+    MeshBuilder::check_weights(prm, geometry);
 
     const double                           setup_time = timer.wall_time();
     std::unique_ptr<Elasticity<dim>>       elasticity;

@@ -68,7 +68,9 @@ namespace PolyFrac
      * Throws if a weight ω of @p geometry (face or cell, scheme.md §4) is
      * negative: the polytopes are too far from star-shaped for the
      * reconstructions. The message names the smallest weights and suggests
-     * fewer Cells per polytope (or less Distortion).
+     * fewer Cells per polytope (or less Distortion). The program checks
+     * every level with it; the reconstructions themselves stay exact on
+     * affine fields with negative weights (tests/discretization).
      */
     template <int dim>
     void
