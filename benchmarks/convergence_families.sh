@@ -20,7 +20,7 @@ run() { # name scene overrides...
   local name=$1 scene=$2; shift 2
   local family=${name#${scene%.prm}-}
   [[ -z ${FAMILIES:-} || " $FAMILIES " == *" $family "* ]] || return 0
-  local args=(--set "Output/Output directory=output/families/$name"
+  local args=(--set "Output/Output directory=$PWD/output/families/$name"
               --set "Output/Write VTU=false"
               --set "Convergence study/Number of refinement levels=$levels")
   for o in "$@"; do args+=(--set "$o"); done

@@ -39,7 +39,7 @@ for a in "$@"; do
     *) program=$a ;;
   esac
 done
-root=output/stability
+root=$PWD/output/stability
 mkdir -p "$root"
 python=/usr/bin/python3
 

@@ -2,13 +2,112 @@
  * The PolyFrac program: `polyfrac [FILE.prm] [--set Subsection/Entry=value
  * ...]` runs the scene of a parameter file (default: prm/default.prm of the
  * source tree), with entries overridden from the command line;
- * `polyfrac --print-parameters 2|3` prints the documented default tree.
+ * `polyfrac --print-parameters [2|3]` prints the documented default tree,
+ * `polyfrac --help` the usage and where to start, `polyfrac --version` the
+ * versions of PolyFrac and deal.II.
  */
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <polyfrac/app/simulator.h>
 
 #include <iostream>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using namespace PolyFrac;
+
+  const std::string source_dir = POLYFRAC_SOURCE_DIR;
+
+  /** Prints the usage, the options and where a new user starts. */
+  void
+  print_help(std::ostream &out)
+  {
+    out
+      << "Usage: polyfrac [FILE.prm] [--set Subsection/Entry=value ...]\n"
+         "       polyfrac --print-parameters [2|3]\n"
+         "       polyfrac --help | --version\n"
+         "\n"
+         "Runs the scene of a deal.II parameter file on each level of its "
+         "convergence study,\nprints the mesh quality, the solver progress and "
+         "the convergence table, and writes\nused_parameters.prm, "
+         "convergence.csv and VTU files to Output/Output directory.\n"
+         "\n"
+         "Options:\n"
+         "  FILE.prm                   the scene (default: "
+      << source_dir
+      << "/prm/default.prm).\n"
+         "                             Relative paths in it (include, "
+         "Mesh/File name,\n"
+         "                             Output/Output directory) are taken "
+         "from its directory.\n"
+         "  --set Subsection/Entry=value\n"
+         "                             overrides an entry of FILE.prm "
+         "(repeatable; not Dimension),\n"
+         "                             e.g. --set \"Mesh/Global "
+         "refinements=2\"\n"
+         "  --print-parameters [2|3]   prints every entry with its default "
+         "and documentation\n"
+         "                             (dimension 2 unless given) and exits\n"
+         "  --help, -h                 prints this help and exits\n"
+         "  --version                  prints the PolyFrac and deal.II "
+         "versions and exits\n"
+         "\n"
+         "Where to start:\n"
+         "  polyfrac                   the default scene: a pressurised "
+         "fracture network in 2D\n"
+         "  polyfrac "
+      << source_dir
+      << "/prm/smooth-2d.prm --set \"Convergence study/Number of "
+         "refinement levels=4\"\n"
+         "                             a convergence study against an exact "
+         "solution\n"
+         "  Scenes, each narrated: "
+      << source_dir
+      << "/prm/*.prm (smooth-2d/3d, b2-2d/3d,\n"
+         "  b2-2d/3d-tresca, b1-inclined-crack, b3-sneddon-2d, b3-penny-3d, "
+         "network-2d/3d-coulomb).\n"
+         "  The parameter file and the outputs are described in "
+      << source_dir << "/README.md.\n";
+  }
+
+  /** Prints the versions of PolyFrac and of the deal.II it was built with. */
+  void
+  print_version(std::ostream &out)
+  {
+    out << "PolyFrac " << POLYFRAC_VERSION << " (deal.II "
+        << DEAL_II_PACKAGE_VERSION << ")" << std::endl;
+  }
+
+  /** The dimension argument of `--print-parameters [2|3]` (2 if absent). */
+  unsigned int
+  print_parameters_dimension(const std::vector<std::string> &arguments)
+  {
+    AssertThrow(arguments.size() <= 2 &&
+                  (arguments.size() == 1 || arguments[1] == "2" ||
+                   arguments[1] == "3"),
+                ExcMessage("--print-parameters takes the dimension 2 or 3 "
+                           "(or nothing, for 2): polyfrac --print-parameters "
+                           "3. See polyfrac --help."));
+    return arguments.size() == 2 ? std::stoi(arguments[1]) : 2;
+  }
+
+  /** True if @p option is one of @p arguments (not the value of a --set). */
+  bool
+  has(const std::vector<std::string> &arguments, const std::string &option)
+  {
+    for (unsigned int i = 0; i < arguments.size(); ++i)
+      if (arguments[i] == option && (i == 0 || arguments[i - 1] != "--set"))
+        return true;
+    return false;
+  }
+} // namespace
+
+
 
 int
 main(int argc, char **argv)
@@ -17,26 +116,49 @@ main(int argc, char **argv)
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string                argument = argc > 1 ? argv[1] : "";
-      if (argument == "--print-parameters")
+      const std::vector<std::string>   arguments(argv + 1, argv + argc);
+      if (has(arguments, "--help") || has(arguments, "-h"))
         {
-          Parameters::print_defaults(argc > 2 ? std::stoi(argv[2]) : 2,
+          print_help(std::cout);
+          return 0;
+        }
+      if (has(arguments, "--version"))
+        {
+          print_version(std::cout);
+          return 0;
+        }
+      if (!arguments.empty() && arguments[0] == "--print-parameters")
+        {
+          Parameters::print_defaults(print_parameters_dimension(arguments),
                                      std::cout);
           return 0;
         }
-      const Parameters prm = Parameters::from_command_line(
-        argc, argv, std::string(POLYFRAC_SOURCE_DIR) + "/prm/default.prm");
-      const unsigned int dim = prm.dim;
-      if (dim == 2)
+      const Parameters prm =
+        Parameters::from_command_line(argc,
+                                      argv,
+                                      source_dir + "/prm/default.prm");
+      if (prm.dim == 2)
         Simulator<2>(prm).run(std::cout);
       else
         Simulator<3>(prm).run(std::cout);
     }
   catch (const ExceptionBase &e)
     {
-      std::cerr << "\nPolyFrac stopped: ";
-      e.print_info(std::cerr);
-      std::cerr << std::endl;
+      std::ostringstream info;
+      e.print_info(info);
+      std::cerr << "\nPolyFrac stopped: " << Utilities::trim(info.str())
+                << std::endl;
+      return 1;
+    }
+  catch (const std::bad_alloc &)
+    {
+      std::cerr
+        << "\nPolyFrac stopped: out of memory (std::bad_alloc). The mesh or "
+           "its linear systems need more memory than this machine has: "
+           "lower Mesh/Subdivisions, Mesh/Global refinements or Convergence "
+           "study/Number of refinement levels, or use Linear solver/Method = "
+           "AMG (UMFPACK's factors need the most memory)."
+        << std::endl;
       return 1;
     }
   catch (const std::exception &e)

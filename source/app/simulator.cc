@@ -2,6 +2,7 @@
 
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
+#include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/mesh/gmsh_reader.h>
@@ -170,7 +171,8 @@ namespace PolyFrac
   {
     for (const std::string &warning : prm.warnings)
       out << "Warning: " << warning << std::endl;
-    std::filesystem::create_directories(prm.output.directory);
+    check_memory(prm);
+    prm.create_output_directory();
     prm.write_used_parameters(prm.output.directory + "/used_parameters.prm");
     written_files = {"used_parameters.prm"};
 
@@ -236,6 +238,7 @@ namespace PolyFrac
 
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
+    MeshBuilder::check_weights(prm, geometry);
 
     std::unique_ptr<Elasticity<dim>>       elasticity;
     std::unique_ptr<ContactMechanics<dim>> contact;

@@ -1,49 +1,125 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/expressions.h>
 
+#include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace PolyFrac
 {
   template <int dim>
-  std::unique_ptr<FunctionParser<dim>>
+  Expression<dim>::Expression(const std::string &entry,
+                              const unsigned int n_components)
+    // A step of 1e-6 for the central differences of gradient().
+    : FunctionParser<dim>(n_components, 0., 1e-6)
+    , entry(entry)
+  {}
+
+
+
+  template <int dim>
+  double
+  Expression<dim>::value(const Point<dim>  &p,
+                         const unsigned int component) const
+  {
+    const double result = FunctionParser<dim>::value(p, component);
+    if (!std::isfinite(result))
+      {
+        std::ostringstream message;
+        message << "Entry <" << entry << "> is not finite at the point (" << p
+                << "): <" << this->get_expressions()[component] << "> gives "
+                << (std::isnan(result) ? "NaN" :
+                    result > 0         ? "inf" :
+                                         "-inf")
+                << ". Fix the expression so that it is finite on the whole "
+                   "domain (a division by zero, or the root or logarithm of "
+                   "a negative number?).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    return result;
+  }
+
+
+
+  namespace
+  {
+    /** The short reason of a muparser error in the text of deal.II's
+     * exception ("... The parser said: REASON"), or the whole text. */
+    std::string
+    parser_reason(const std::string &info)
+    {
+      const std::string marker = "The parser said: ";
+      const std::size_t start  = info.find(marker);
+      return Utilities::trim(
+        start == std::string::npos ? info : info.substr(start + marker.size()));
+    }
+
+    /** Redirects std::cerr for its lifetime: deal.II's FunctionParser
+     * prints muparser's raw diagnostics there before it throws. */
+    class SilencedCerr
+    {
+    public:
+      SilencedCerr()
+        : saved(std::cerr.rdbuf(swallowed.rdbuf()))
+      {}
+      ~SilencedCerr()
+      {
+        std::cerr.rdbuf(saved);
+      }
+
+    private:
+      std::ostringstream swallowed;
+      std::streambuf    *saved;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  std::unique_ptr<Expression<dim>>
   make_expression(const std::string                   &entry,
                   const std::string                   &expression,
                   const unsigned int                   n_components,
                   const std::map<std::string, double> &constants)
   {
-    // A step of 1e-6 for the central differences of gradient().
-    auto function =
-      std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-6);
+    auto function = std::make_unique<Expression<dim>>(entry, n_components);
     std::map<std::string, double> all_constants = constants;
     all_constants.emplace("pi", numbers::PI);
     all_constants.emplace("Pi", numbers::PI);
+    const std::string cannot_parse =
+      "Entry <" + entry + ">: cannot parse <" + expression + ">: ";
+    const std::string how_to_fix =
+      " Write it in x, y" + std::string(dim == 3 ? ", z" : "") +
+      ", t, pi and the names of Expressions/Function constants, with "
+      "muparser's functions (sin, exp, sqrt, abs, if(c, a, b), c ? a : b, "
+      "...), components separated by ';'.";
     try
       {
+        const SilencedCerr silenced;
         function->initialize(FunctionParser<dim>::default_variable_names() +
                                ",t",
                              expression,
                              all_constants,
                              true);
-        // Evaluate once: muparser reports unknown names only then.
-        Vector<double> value(n_components);
-        function->vector_value(Point<dim>(), value);
+        // Evaluate once: muparser reports unknown names only then. The
+        // origin need not lie in the domain, so its values are not checked.
+        for (unsigned int c = 0; c < n_components; ++c)
+          function->FunctionParser<dim>::value(Point<dim>(), c);
       }
     catch (const ExceptionBase &e)
       {
         std::ostringstream info;
         e.print_info(info);
         AssertThrow(false,
-                    ExcMessage("Entry <" + entry + ">: cannot parse <" +
-                               expression + ">: " + info.str()));
+                    ExcMessage(cannot_parse + parser_reason(info.str()) +
+                               how_to_fix));
       }
     catch (const std::exception &e)
       {
-        AssertThrow(false,
-                    ExcMessage("Entry <" + entry + ">: cannot parse <" +
-                               expression + ">: " + e.what()));
+        AssertThrow(false, ExcMessage(cannot_parse + e.what() + how_to_fix));
       }
     return function;
   }
@@ -67,12 +143,14 @@ namespace PolyFrac
 
 
 
-  template std::unique_ptr<FunctionParser<2>>
+  template class Expression<2>;
+  template class Expression<3>;
+  template std::unique_ptr<Expression<2>>
   make_expression(const std::string &,
                   const std::string &,
                   const unsigned int,
                   const std::map<std::string, double> &);
-  template std::unique_ptr<FunctionParser<3>>
+  template std::unique_ptr<Expression<3>>
   make_expression(const std::string &,
                   const std::string &,
                   const unsigned int,

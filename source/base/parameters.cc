@@ -1,11 +1,15 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <polyfrac/base/expressions.h>
 #include <polyfrac/base/parameters.h>
 
+#include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace PolyFrac
 {
@@ -80,24 +84,137 @@ namespace PolyFrac
 
   namespace
   {
-    /** The Dimension set in @p file_name or its includes, 0 if none. */
-    unsigned int
-    find_dimension(const std::string &file_name)
+    /** The directory of @p file_name ("" for a file in the current one). */
+    std::string
+    directory_of(const std::string &file_name)
     {
-      std::ifstream in(file_name);
+      return std::filesystem::path(file_name).parent_path().string();
+    }
+
+    /** @p path taken from @p directory if it is relative (the rule for
+     * every path of a parameter file), then written relative to the
+     * current directory, so that printed paths do not depend on where the
+     * parameter file lies. */
+    std::string
+    resolved(const std::string &path, const std::string &directory)
+    {
+      if (path.empty() || directory.empty() || path[0] == '/')
+        return path;
+      return std::filesystem::proximate(std::filesystem::path(directory) / path)
+        .string();
+    }
+
+    /**
+     * Throws unless @p path is a readable text file: @p what names it ("The
+     * parameter file", "In <a.prm>, line 3: the included file") and
+     * @p relative_to says where relative paths start. A directory or a
+     * binary file would otherwise be read as an empty parameter file (the
+     * defaults) or as garbage.
+     */
+    void
+    check_text_file(const std::string &path,
+                    const std::string &what,
+                    const std::string &relative_to)
+    {
+      namespace fs = std::filesystem;
+      std::error_code       error;
+      const fs::file_status status = fs::status(path, error);
+      AssertThrow(fs::exists(status),
+                  ExcMessage(what + " <" + path + "> does not exist (" +
+                             relative_to +
+                             "): check the name and the directory."));
+      if (fs::is_directory(status))
+        {
+          std::string prm_files;
+          for (const auto &file : fs::directory_iterator(path, error))
+            if (file.path().extension() == ".prm")
+              prm_files += (prm_files.empty() ? "" : ", ") +
+                           file.path().filename().string();
+          AssertThrow(false,
+                      ExcMessage(what + " <" + path +
+                                 "> is a directory, not a parameter file: "
+                                 "name a .prm file" +
+                                 (prm_files.empty() ?
+                                    std::string(".") :
+                                    " (it holds " + prm_files + ").")));
+        }
+      std::ifstream in(path, std::ios::binary);
       AssertThrow(in,
-                  ExcMessage("Cannot open the parameter file <" + file_name +
-                             ">: check the path."));
-      const std::regex set_dimension(
-        R"(^\s*set\s+Dimension\s*=\s*(\S+)\s*(#.*)?$)");
-      const std::regex include(R"(^\s*include\s+(\S+)\s*$)");
+                  ExcMessage(what + " <" + path +
+                             "> exists but cannot be read: check its "
+                             "permissions."));
+      // Parameter files are text: bytes below 0x20 other than white space
+      // (and DEL) mark a binary file. UTF-8 (bytes >= 0x80) is text.
+      char        c;
+      std::size_t offset = 0;
+      while (in.get(c) && offset < (1u << 20))
+        {
+          const unsigned char byte = c;
+          AssertThrow(!((byte < 0x20 && !std::isspace(byte)) || byte == 0x7f),
+                      ExcMessage(
+                        what + " <" + path + "> is not a text file (byte " +
+                        std::to_string(offset) + " is " + std::to_string(byte) +
+                        "): give a deal.II parameter file, lines "
+                        "such as <set Dimension = 2>, <subsection "
+                        "Mesh> ... <end> (see polyfrac "
+                        "--print-parameters)."));
+          ++offset;
+        }
+    }
+
+    /** Makes @p directory the current one for its lifetime: deal.II opens
+     * the files of `include` lines relative to the current directory, and
+     * PolyFrac takes them from the parameter file's directory. */
+    class WorkingDirectory
+    {
+    public:
+      explicit WorkingDirectory(const std::string &directory)
+        : saved(std::filesystem::current_path())
+      {
+        if (!directory.empty())
+          std::filesystem::current_path(directory);
+      }
+      ~WorkingDirectory()
+      {
+        std::filesystem::current_path(saved);
+      }
+
+    private:
+      const std::filesystem::path saved;
+    };
+
+    /**
+     * Checks @p file_name (a text file) and the files it includes (relative
+     * paths taken from @p directory, that of the main parameter file), and
+     * returns the Dimension set in them, 0 if none.
+     */
+    unsigned int
+    scan(const std::string &file_name,
+         const std::string &directory,
+         const std::string &what,
+         const std::string &relative_to)
+    {
+      check_text_file(file_name, what, relative_to);
+      std::ifstream    in(file_name);
+      const std::regex set_dimension(R"(^\s*set\s+Dimension\s*=\s*(\S+)\s*$)");
+      const std::regex include(R"(^\s*(include|INCLUDE)\s+(.*\S)\s*$)");
       std::string      line;
-      unsigned int     dim = 0;
+      unsigned int     dim = 0, line_number = 0;
       while (std::getline(in, line))
         {
+          ++line_number;
+          line = line.substr(0, line.find('#'));
           std::smatch match;
           if (std::regex_match(line, match, include))
-            dim = std::max(dim, find_dimension(match[1]));
+            dim = std::max(
+              dim,
+              scan(resolved(match[2], directory),
+                   directory,
+                   "In <" + file_name + ">, line " +
+                     std::to_string(line_number) + ": the included file",
+                   "include paths are relative to the directory of the "
+                   "parameter file, <" +
+                     (directory.empty() ? std::string(".") : directory) + ">"));
           else if (std::regex_match(line, match, set_dimension))
             {
               AssertThrow(match[1] == "2" || match[1] == "3",
@@ -110,6 +227,27 @@ namespace PolyFrac
         }
       return dim;
     }
+
+    /** The text of a deal.II exception on one line (deal.II lays out
+     * pattern mismatches over several lines). */
+    std::string
+    one_line(const ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      return Utilities::trim(
+        std::regex_replace(info.str(), std::regex(R"(\s+)"), " "));
+    }
+
+    /** The text of a deal.II parameter exception without its "Line <n> of
+     * file <f>:" prefix (an override has no file). */
+    std::string
+    reason(const ExceptionBase &e)
+    {
+      return std::regex_replace(one_line(e),
+                                std::regex(R"(^Line <\d+> of file <[^>]*>: )"),
+                                "");
+    }
   } // namespace
 
 
@@ -117,7 +255,11 @@ namespace PolyFrac
   unsigned int
   Parameters::read_dimension(const std::string &file_name)
   {
-    const unsigned int dim = find_dimension(file_name);
+    const unsigned int dim =
+      scan(file_name,
+           directory_of(file_name),
+           "The parameter file",
+           "a relative path starts in the current directory");
     return dim == 0 ? 2 : dim;
   }
 
@@ -228,8 +370,9 @@ namespace PolyFrac
     prm.declare_entry("File name",
                       "",
                       Patterns::Anything(),
-                      "gmsh mesh (.msh) for Source = gmsh; relative paths are "
-                      "taken from the parameter file's directory.");
+                      "gmsh mesh (.msh or .geo) for Source = gmsh; a relative "
+                      "path is taken from the directory of the parameter "
+                      "file.");
     prm.leave_subsection();
 
     prm.enter_subsection("Fractures");
@@ -262,12 +405,13 @@ namespace PolyFrac
     prm.enter_subsection("Material");
     prm.declare_entry("Lame lambda",
                       "1",
-                      Patterns::Double(0),
-                      "First Lame coefficient.");
+                      Patterns::Double(),
+                      "First Lame coefficient; any lambda > -2 mu/d is "
+                      "admissible (the elastic energy stays positive).");
     prm.declare_entry("Lame mu",
                       "1",
-                      Patterns::Double(1e-300),
-                      "Shear modulus.");
+                      Patterns::Double(),
+                      "Shear modulus, > 0.");
     prm.leave_subsection();
 
     prm.enter_subsection("Body force");
@@ -425,7 +569,8 @@ namespace PolyFrac
       "output",
       Patterns::Anything(),
       "Where VTU files, convergence.csv and the used parameters "
-      "go (created if missing).");
+      "go (created if missing); a relative path is taken from the "
+      "directory of the parameter file.");
     prm.declare_entry("Write VTU",
                       "true",
                       Patterns::Bool(),
@@ -455,40 +600,61 @@ namespace PolyFrac
                     const std::vector<std::string> &overrides)
   {
     file_name = name;
-    std::ifstream in(file_name);
-    AssertThrow(in,
-                ExcMessage("Cannot open the parameter file <" + file_name +
-                           ">: check the path."));
+    scan(file_name,
+         directory_of(file_name),
+         "The parameter file",
+         "a relative path starts in the current directory");
     try
       {
+        std::ifstream          in(file_name);
+        const WorkingDirectory includes_from(directory_of(file_name));
         prm->parse_input(in, file_name);
-        for (const std::string &entry : overrides)
-          {
-            const std::size_t equal = entry.find('=');
-            AssertThrow(equal != std::string::npos,
-                        ExcMessage("The override <" + entry +
-                                   "> must read <Subsection/Entry=value>."));
-            const std::vector<std::string> path =
-              Utilities::split_string_list(entry.substr(0, equal), '/');
-            std::string text;
-            for (unsigned int i = 0; i + 1 < path.size(); ++i)
-              text += "subsection " + path[i] + "\n";
-            text +=
-              "set " + path.back() + " = " + entry.substr(equal + 1) + "\n";
-            for (unsigned int i = 0; i + 1 < path.size(); ++i)
-              text += "end\n";
-            prm->parse_input_from_string(text, "command line: " + entry);
-          }
       }
     catch (const ExceptionBase &e)
       {
-        std::ostringstream info;
-        e.print_info(info);
         AssertThrow(false,
-                    ExcMessage("Invalid parameter file: " +
-                               Utilities::trim(info.str())));
+                    ExcMessage("Invalid parameter file: " + one_line(e)));
       }
+    for (const std::string &entry : overrides)
+      apply_override(entry);
     read_values();
+  }
+
+
+
+  void
+  Parameters::apply_override(const std::string &entry)
+  {
+    const std::string usage =
+      "The command-line option --set \"" + entry + "\": ";
+    const std::size_t equal = entry.find('=');
+    AssertThrow(equal != std::string::npos,
+                ExcMessage(usage +
+                           "must read --set \"Subsection/Entry=value\", "
+                           "e.g. --set \"Mesh/Global refinements=2\"."));
+    const std::vector<std::string> path =
+      Utilities::split_string_list(entry.substr(0, equal), '/');
+    AssertThrow(path.size() > 1 || path[0] != "Dimension",
+                ExcMessage(usage + "Dimension cannot be overridden (vector "
+                                   "entries depend on it): set it in the "
+                                   "parameter file."));
+    std::string text;
+    for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      text += "subsection " + path[i] + "\n";
+    text += "set " + path.back() + " = " + entry.substr(equal + 1) + "\n";
+    for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      text += "end\n";
+    try
+      {
+        prm->parse_input_from_string(text);
+      }
+    catch (const ExceptionBase &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(usage + reason(e) +
+                               " (polyfrac --print-parameters lists the "
+                               "subsections and entries.)"));
+      }
   }
 
 
@@ -576,10 +742,7 @@ namespace PolyFrac
       {
         AssertThrow(!mesh.file_name.empty(),
                     ExcMessage(where + ": <Source = gmsh> needs <File name>."));
-        if (mesh.file_name[0] != '/' &&
-            file_name.find('/') != std::string::npos)
-          mesh.file_name =
-            file_name.substr(0, file_name.rfind('/') + 1) + mesh.file_name;
+        mesh.file_name = resolved(mesh.file_name, directory_of(file_name));
         AssertThrow(std::ifstream(mesh.file_name).good(),
                     ExcMessage(where + ": the mesh file <" + mesh.file_name +
                                "> cannot be opened."));
@@ -614,6 +777,7 @@ namespace PolyFrac
     lame_lambda = prm->get_double("Lame lambda");
     lame_mu     = prm->get_double("Lame mu");
     prm->leave_subsection();
+    check_lame_coefficients();
 
     prm->enter_subsection("Body force");
     body_force = checked_vector_expression("Body force/Function expression",
@@ -731,18 +895,90 @@ namespace PolyFrac
     prm->leave_subsection();
 
     prm->enter_subsection("Output");
-    output.directory       = prm->get("Output directory");
+    output.directory =
+      resolved(prm->get("Output directory"), directory_of(file_name));
+    AssertThrow(!output.directory.empty(),
+                ExcMessage("In <" + file_name +
+                           ">: Output/Output directory is empty: name a "
+                           "directory, e.g. output."));
     output.write_vtu       = prm->get_bool("Write VTU");
     output.vtu_compression = prm->get("VTU compression");
     output.print_timings   = prm->get_bool("Print timings");
     prm->leave_subsection();
 
     warn_unused_entries();
+    check_expressions();
     AssertThrow(model != "poromechanics" || file_name.empty(),
                 ExcMessage("In <" + file_name +
                            ">: Model = poromechanics is not available in this "
                            "version of PolyFrac; use elasticity or contact "
                            "mechanics."));
+  }
+
+
+
+  void
+  Parameters::check_lame_coefficients() const
+  {
+    const std::string where = "In <" + file_name + ">, subsection <Material>: ";
+    AssertThrow(lame_mu > 0,
+                ExcMessage(where + "<Lame mu> must be > 0, not " +
+                           std::to_string(lame_mu) + "."));
+    // λ > −2μ/d keeps the energy μ|ε|² + λ/2 (tr ε)² positive: its bulk
+    // part is (λ + 2μ/d)/2 (tr ε)².
+    const double bound = -2 * lame_mu / dim;
+    AssertThrow(lame_lambda > bound,
+                ExcMessage(where +
+                           "<Lame lambda> = " + std::to_string(lame_lambda) +
+                           " is not admissible: with Lame mu = " +
+                           std::to_string(lame_mu) + " in dimension " +
+                           std::to_string(dim) +
+                           " the elastic energy is positive only for "
+                           "lambda > -2 mu/d = " +
+                           std::to_string(bound) + "."));
+  }
+
+
+
+  void
+  Parameters::check_expressions() const
+  {
+    // Each expression entry with its number of components, parsed here,
+    // before any mesh is built, so that a typo stops the run at once.
+    const std::vector<std::tuple<std::string, std::string, unsigned int>>
+      entries = {
+        {"Body force/Function expression", body_force, dim},
+        {"Boundary conditions/Dirichlet expression",
+         boundary.dirichlet_expression,
+         dim},
+        {"Boundary conditions/Neumann traction",
+         boundary.neumann_traction,
+         dim},
+        {"Fractures/Pressure", fractures.pressure, 1},
+        {"Fractures/Traction", fractures.traction, dim},
+        {"Contact/Tresca threshold", contact.tresca_threshold, 1},
+        {"Exact solution/Displacement", exact.displacement, dim},
+        {"Exact solution/Displacement jump", exact.displacement_jump, dim},
+        {"Exact solution/Contact traction", exact.contact_traction, dim}};
+    for (const auto &[entry, expression, n_components] : entries)
+      if (!expression.empty())
+        {
+          try
+            {
+              if (dim == 2)
+                make_expression<2>(entry, expression, n_components, constants);
+              else
+                make_expression<3>(entry, expression, n_components, constants);
+            }
+          catch (const ExceptionBase &e)
+            {
+              std::ostringstream info;
+              e.print_info(info);
+              AssertThrow(false,
+                          ExcMessage("In <" + file_name +
+                                     ">: " + Utilities::trim(info.str())));
+            }
+        }
   }
 
 
@@ -797,15 +1033,29 @@ namespace PolyFrac
                                 char             **argv,
                                 const std::string &default_file)
   {
+    const std::string usage =
+      std::string("Usage: ") + argv[0] +
+      " [FILE.prm] [--set Subsection/Entry=value ...]; see " + argv[0] +
+      " --help.";
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string argument = argv[i];
+        AssertThrow(argument.rfind("-", 0) != 0 || argument == "--set",
+                    ExcMessage("Unknown option <" + argument + ">. " + usage));
+        if (argument == "--set")
+          ++i;
+      }
     const bool        has_file = argc > 1 && std::string(argv[1]) != "--set";
     const std::string file     = has_file ? argv[1] : default_file;
     std::vector<std::string> overrides;
     for (int i = has_file ? 2 : 1; i < argc; ++i)
       {
-        AssertThrow(std::string(argv[i]) == "--set" && i + 1 < argc,
-                    ExcMessage(std::string("Usage: ") + argv[0] +
-                               " [FILE.prm] [--set Subsection/Entry=value "
-                               "...]"));
+        AssertThrow(std::string(argv[i]) == "--set",
+                    ExcMessage("Unexpected argument <" + std::string(argv[i]) +
+                               "> (one parameter file only). " + usage));
+        AssertThrow(i + 1 < argc,
+                    ExcMessage("--set needs a value Subsection/Entry=value. " +
+                               usage));
         overrides.push_back(argv[++i]);
       }
     Parameters prm(read_dimension(file));
@@ -816,9 +1066,35 @@ namespace PolyFrac
 
 
   void
+  Parameters::create_output_directory() const
+  {
+    const std::string how_to_fix =
+      ": set Output/Output directory to a directory you can write (a "
+      "relative path is taken from the directory of the parameter file).";
+    std::error_code error;
+    std::filesystem::create_directories(output.directory, error);
+    AssertThrow(!error,
+                ExcMessage("In <" + file_name +
+                           ">: cannot create the output directory <" +
+                           output.directory + "> (" + error.message() + ")" +
+                           how_to_fix));
+    AssertThrow(std::filesystem::is_directory(output.directory),
+                ExcMessage("In <" + file_name + ">: the output directory <" +
+                           output.directory + "> is a file" + how_to_fix));
+    const std::string probe = output.directory + "/used_parameters.prm";
+    AssertThrow(std::ofstream(probe, std::ios::app).good(),
+                ExcMessage("In <" + file_name +
+                           ">: cannot write to the output directory <" +
+                           output.directory + ">" + how_to_fix));
+  }
+
+
+
+  void
   Parameters::write_used_parameters(const std::string &name) const
   {
     std::ofstream out(name);
+    AssertThrow(out, ExcMessage("Cannot write <" + name + ">."));
     prm->print_parameters(out, ParameterHandler::PRM);
   }
 

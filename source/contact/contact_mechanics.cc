@@ -297,14 +297,24 @@ namespace PolyFrac
       }
     catch (const std::exception &)
       {
-        AssertThrow(false,
-                    ExcMessage("The Newton Jacobian of the contact problem is "
-                               "singular (UMFPACK) at iteration " +
-                               std::to_string(iteration) +
-                               ": with every face in contact and no bubbles "
-                               "(Contact/Bubbles = false), some multiplier "
-                               "patterns are invisible to the discrete jumps. "
-                               "Use Bubbles = true."));
+        AssertThrow(
+          false,
+          ExcMessage(
+            "In <" + prm.file_name +
+            ">: the Newton Jacobian of the contact problem is singular "
+            "(UMFPACK) at iteration " +
+            std::to_string(iteration) +
+            ": the contact state leaves some unknowns undetermined. Usually "
+            "a part of the domain is free to move: a block cut off by the "
+            "fractures without Dirichlet boundary, held only by faces in "
+            "contact (free to slide when frictionless or slipping). Give "
+            "every such block a Dirichlet boundary (Boundary "
+            "conditions/Dirichlet boundary ids)" +
+            (prm.contact.bubbles ?
+               std::string(".") :
+               "; with Contact/Bubbles = false some multiplier patterns are "
+               "moreover invisible to the discrete jumps: set Bubbles = "
+               "true.")));
       }
     direct.vmult(step, rhs);
     return {};

@@ -2,7 +2,9 @@
 
 #include <polyfrac/fractures/fracture_network.h>
 
+#include <cmath>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -29,6 +31,37 @@ namespace PolyFrac
       for (unsigned int i = 0; i < fracture.points.size(); ++i)
         out << (i == 0 ? "" : " : ") << fracture.points[i];
       return out.str();
+    }
+
+    /** Throws naming the polygon unless it is convex and simple. */
+    void
+    check_convex(const Fracture<3> &fracture)
+    {
+      const auto &points = fracture.points;
+      const auto &normal = fracture.normal;
+      // Convex and simple: every turn is to the left about n^+ and the turns
+      // add up to one full turn (a star polygon turns twice).
+      const unsigned int n     = points.size();
+      double             turns = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const Tensor<1, 3> in  = points[i] - points[(i + n - 1) % n];
+          const Tensor<1, 3> out = points[(i + 1) % n] - points[i];
+          const double       sine =
+            cross_product_3d(in, out) * normal / (in.norm() * out.norm());
+          AssertThrow(sine >= -1e-10 && in.norm() > 0,
+                      ExcMessage("The fracture polygon " + describe(fracture) +
+                                 " is not convex (at its vertex " +
+                                 std::to_string(i + 1) +
+                                 "): PolyFrac takes planar convex polygons, "
+                                 "their vertices in order around the boundary; "
+                                 "split it into convex polygons."));
+          turns += std::atan2(sine, in * out / (in.norm() * out.norm()));
+        }
+      AssertThrow(std::abs(turns - 2 * numbers::PI) < 1e-6,
+                  ExcMessage("The fracture polygon " + describe(fracture) +
+                             " crosses itself: give its vertices in order "
+                             "around the boundary of a convex polygon."));
     }
   } // namespace
 
@@ -65,6 +98,7 @@ namespace PolyFrac
                         1e-10 * std::sqrt(measure),
                       ExcMessage("The fracture polygon " + describe(*this) +
                                  " is not planar."));
+        check_convex(*this);
         Tensor<1, 3> t = points[1] - points[0];
         t -= (t * normal) * normal;
         tangents[0] = t / t.norm();
@@ -143,7 +177,8 @@ namespace PolyFrac
       {
         if (mesh.faces[f].at_boundary())
           continue;
-        const double tol = 1e-10 * geometry.faces[f].diameter;
+        const double                tol = 1e-10 * geometry.faces[f].diameter;
+        std::optional<unsigned int> found;
         for (unsigned int i = 0; i < fractures.size(); ++i)
           {
             bool on_fracture = true;
@@ -153,12 +188,28 @@ namespace PolyFrac
                   on_fracture = false;
                   break;
                 }
-            if (on_fracture)
+            if (!on_fracture)
+              continue;
+            if (found)
               {
-                add_face(f, i, fractures[i].normal);
-                break;
+                std::ostringstream where;
+                where << geometry.faces[f].centroid;
+                AssertThrow(false,
+                            ExcMessage(
+                              "Fractures " + std::to_string(*found) + " (" +
+                              names[*found] + ") and " + std::to_string(i) +
+                              " (" + names[i] +
+                              ") overlap: both contain the mesh face centred "
+                              "at " +
+                              where.str() +
+                              ". Remove the duplicate, or shorten one so that "
+                              "fractures meet only at " +
+                              (dim == 2 ? "a point." : "a line.")));
               }
+            found = i;
           }
+        if (found)
+          add_face(f, *found, fractures[*found].normal);
       }
     check_resolution();
   }

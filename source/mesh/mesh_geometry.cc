@@ -245,19 +245,30 @@ namespace PolyFrac
 
 
   template <int dim>
-  void
-  MeshGeometry<dim>::print_quality(std::ostream &out) const
+  std::pair<double, double>
+  MeshGeometry<dim>::smallest_weights() const
   {
-    double       min_face_weight = 1, min_cell_weight = 1;
-    unsigned int min_faces = numbers::invalid_unsigned_int, max_faces = 0;
-    double       sum_faces = 0;
+    double min_face_weight = 1, min_cell_weight = 1;
     for (const auto &face : faces)
       for (const double w : face.weights)
         min_face_weight = std::min(min_face_weight, w);
+    for (const auto &cell : cells)
+      for (const double w : cell.weights)
+        min_cell_weight = std::min(min_cell_weight, w);
+    return {min_face_weight, min_cell_weight};
+  }
+
+
+
+  template <int dim>
+  void
+  MeshGeometry<dim>::print_quality(std::ostream &out) const
+  {
+    const auto [min_face_weight, min_cell_weight] = smallest_weights();
+    unsigned int min_faces = numbers::invalid_unsigned_int, max_faces = 0;
+    double       sum_faces = 0;
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
-        for (const double w : cells[c].weights)
-          min_cell_weight = std::min(min_cell_weight, w);
         const unsigned int n = mesh.cells[c].faces.size();
         min_faces            = std::min(min_faces, n);
         max_faces            = std::max(max_faces, n);

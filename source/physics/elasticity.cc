@@ -63,6 +63,7 @@ namespace PolyFrac
                                           listed(ids.dirichlet_ids);
     };
 
+    check_boundary_ids();
     constraints.clear();
     bool has_dirichlet_face = false;
     for (const auto &face : mesh.faces)
@@ -95,6 +96,36 @@ namespace PolyFrac
                            "boundary ids (or leave it empty and list fewer "
                            "Neumann ids)."));
     constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::check_boundary_ids() const
+  {
+    std::set<types::boundary_id> mesh_ids;
+    for (const auto &face : geometry.mesh.faces)
+      if (face.at_boundary())
+        mesh_ids.insert(face.boundary_id);
+    std::string listed;
+    for (const types::boundary_id id : mesh_ids)
+      listed += (listed.empty() ? "" : ", ") + std::to_string(id);
+    const auto check = [&](const std::string           &entry,
+                           const std::vector<unsigned> &ids) {
+      for (const unsigned int id : ids)
+        AssertThrow(mesh_ids.count(id) == 1,
+                    ExcMessage("In <" + prm.file_name +
+                               ">: Boundary conditions/" + entry +
+                               " lists the id " + std::to_string(id) +
+                               ", which no boundary face of the mesh carries. "
+                               "The mesh has the boundary ids " +
+                               listed +
+                               " (generated boxes: 0/1 at x min/max, 2/3 at "
+                               "y, 4/5 at z)."));
+    };
+    check("Dirichlet boundary ids", prm.boundary.dirichlet_ids);
+    check("Neumann boundary ids", prm.boundary.neumann_ids);
   }
 
 

@@ -1,9 +1,10 @@
 // Checks that bad parameter files stop with a clear error naming the file
-// and the entry: unknown entry, wrong pattern, wrong number of vector
-// components, unparsable expression, bad dimension, missing mesh file,
-// unresolved fracture, no Dirichlet boundary, unavailable model; for contact
-// mechanics: no fracture, negative friction coefficient or Tresca threshold,
-// beta <= 0 or not a number, unresolved fracture.
+// and the entry (the test fails if one of them does not throw): unknown entry,
+// wrong pattern, wrong number of vector components, unparsable expression, bad
+// dimension, missing mesh file, unresolved fracture, no Dirichlet boundary,
+// unavailable model; for contact mechanics: no fracture, negative friction
+// coefficient or Tresca threshold, beta <= 0 or not a number, unresolved
+// fracture.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -29,6 +30,7 @@ check(const std::string &name,
   else
     std::remove(file.c_str());
   std::cout << name << ": ";
+  bool thrown = false;
   try
     {
       const unsigned int dim = Parameters::read_dimension(file);
@@ -46,14 +48,15 @@ check(const std::string &name,
                                    *level.dofs);
           elasticity.assemble();
         }
-      std::cout << "no error" << std::endl;
     }
   catch (const ExceptionBase &e)
     {
       std::ostringstream info;
       e.print_info(info);
       std::cout << Utilities::trim(info.str()) << std::endl;
+      thrown = true;
     }
+  AssertThrow(thrown, ExcMessage(name + " was accepted"));
 }
 
 int

@@ -13,12 +13,39 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * A deal.II FunctionParser for the expression of a parameter entry, in
-   * x, y (z) and t with the constants of `Expressions/Function constants`.
-   * Components are separated by ';'. A parse error names @p entry.
+   * The FunctionParser of a parameter entry that refuses to return a value
+   * that is not finite: value() (and through it vector_value() and the
+   * finite-difference gradients) throws an ExcMessage naming the entry, the
+   * expression, the component and the point where it evaluates to inf or
+   * NaN (a division by zero, the root or logarithm of a negative number).
+   * Data that are not finite would otherwise run through the solvers and
+   * fill the outputs with NaN.
    */
   template <int dim>
-  std::unique_ptr<FunctionParser<dim>>
+  class Expression : public FunctionParser<dim>
+  {
+  public:
+    /** An expression of @p n_components components for the entry
+     * @p entry (Subsection/Entry); initialise it with initialize(). */
+    Expression(const std::string &entry, const unsigned int n_components);
+
+    /** The value of @p component at @p p; throws if it is not finite. */
+    double
+    value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    /** The entry this expression comes from, e.g. "Fractures/Pressure". */
+    const std::string entry;
+  };
+
+  /**
+   * The Expression of a parameter entry, in x, y (z) and t with the
+   * constants of `Expressions/Function constants` (and pi). Components are
+   * separated by ';'. An expression that does not parse throws an
+   * ExcMessage naming @p entry with muparser's reason (its diagnostics on
+   * std::cerr are swallowed).
+   */
+  template <int dim>
+  std::unique_ptr<Expression<dim>>
   make_expression(const std::string                   &entry,
                   const std::string                   &expression,
                   const unsigned int                   n_components,

@@ -29,9 +29,11 @@ namespace PolyFrac
    *   prm.parse("scene.prm");
    * @endcode
    *
-   * Every error a user can make (unknown entry, wrong pattern, wrong number
-   * of vector components, model not available) throws an ExcMessage that
-   * names the file and the entry.
+   * Every error a user can make (a parameter file that is missing, a
+   * directory or binary, a missing include, unknown entry, wrong pattern,
+   * wrong number of vector components, an expression that does not parse,
+   * inadmissible Lamé coefficients, model not available) throws an
+   * ExcMessage that names the file and the entry, or the `--set` argument.
    */
   class Parameters
   {
@@ -47,7 +49,11 @@ namespace PolyFrac
     /**
      * Parses @p file_name, then the @p overrides ("Mesh/Cell type=simplex":
      * subsections separated by '/', the value after '='), and validates
-     * every entry.
+     * every entry; expressions are parsed here, before any mesh is built.
+     *
+     * One rule for relative paths: `include` lines, Mesh/File name and
+     * Output/Output directory are taken from the directory of @p file_name
+     * (also when set in an included file or by an override).
      */
     void
     parse(const std::string              &file_name,
@@ -62,6 +68,14 @@ namespace PolyFrac
     from_command_line(const int          argc,
                       char             **argv,
                       const std::string &default_file);
+
+    /**
+     * Creates Output/Output directory (and its parents) and checks that it
+     * can be written; throws naming the entry otherwise. Call it once the
+     * parameters are valid, so that a failed parse leaves nothing behind.
+     */
+    void
+    create_output_directory() const;
 
     /** Writes the used parameters (all entries, with their documentation). */
     void
@@ -236,6 +250,20 @@ namespace PolyFrac
 
     void
     read_values();
+
+    /** Applies one `--set Subsection/Entry=value` of the command line;
+     * throws naming the argument. */
+    void
+    apply_override(const std::string &entry);
+
+    /** Throws unless mu > 0 and lambda > -2 mu/dim. */
+    void
+    check_lame_coefficients() const;
+
+    /** Parses every expression entry (dimension dim); throws naming the
+     * entry and muparser's reason. */
+    void
+    check_expressions() const;
 
     /** Warns about entries the chosen model does not use but that are set. */
     void

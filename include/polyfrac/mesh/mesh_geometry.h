@@ -7,6 +7,7 @@
 #include <polyfrac/mesh/polytopal_mesh.h>
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace PolyFrac
@@ -140,6 +141,11 @@ namespace PolyFrac
     /** Largest cell diameter. */
     double
     max_diameter() const;
+
+    /** The smallest face weight ω_s^σ and the smallest cell weight ω_s^K
+     * (negative on polytopes too far from star-shaped). */
+    std::pair<double, double>
+    smallest_weights() const;
 
     /** The mesh described. */
     const PolytopalMesh<dim> &mesh;

@@ -117,6 +117,11 @@ namespace PolyFrac
     Vector<double> solution;
 
   private:
+    /** Throws, listing the ids the mesh has, if a Dirichlet or Neumann
+     * boundary id of the parameters is carried by no boundary face. */
+    void
+    check_boundary_ids() const;
+
     FullMatrix<double>
     local_stiffness(const LocalReconstruction<dim> &local) const;
 

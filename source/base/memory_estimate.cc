@@ -1,0 +1,105 @@
+#include <deal.II/base/exceptions.h>
+
+#include <polyfrac/base/memory_estimate.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    /**
+     * Bytes per deal.II cell of the finest level, [dim − 2][direct]: the
+     * smallest (maximum resident memory − 158 MB of start-up) / cells of
+     * `/usr/bin/time -v build/polyfrac` on one level of the B2 scenes
+     * (2026-11-22, Release):
+     *
+     * | scene, method           | cells | max RSS | bytes/cell |
+     * |-------------------------|-------|---------|------------|
+     * | b2-2d, direct           |  4096 |  189 MB |       7626 |
+     * | b2-2d, direct           | 65536 |  581 MB |       6616 |
+     * | b2-2d, AMG              | 65536 |  434 MB |       4314 |
+     * | b2-2d-tresca, direct    | 16384 |  291 MB |       8318 |
+     * | b2-3d, direct           |  4096 |  316 MB |      39616 |
+     * | b2-3d, direct           | 13824 | 1033 MB |      64850 |
+     * | b2-3d, AMG              | 13824 |  358 MB |      14781 |
+     * | b2-3d-tresca, AMG       |  4096 |  247 MB |      22179 |
+     *
+     * UMFPACK's factors grow faster than the cells in 3D, so the figures
+     * are lower bounds on larger meshes.
+     */
+    constexpr double bytes_per_cell[2][2] = {{4300., 6600.}, {14700., 39600.}};
+  } // namespace
+
+
+
+  double
+  estimated_n_cells(const Parameters &prm)
+  {
+    if (prm.mesh.source != "hyper rectangle")
+      return 0;
+    const unsigned int dim = prm.dim;
+    const double       refinements =
+      prm.mesh.global_refinements + prm.n_refinement_levels - 1;
+    double n_cells = std::pow(2., dim * refinements);
+    for (unsigned int d = 0; d < dim; ++d)
+      n_cells *= prm.mesh.subdivisions[d];
+    if (prm.mesh.cell_type == "simplex")
+      n_cells *= (dim == 2 ? 2 : 5);
+    // The part of the domain in the local refinement box gains 2^dim
+    // children per cell and refinement.
+    double in_box = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      in_box *=
+        std::max(0.,
+                 std::min(prm.mesh.box_upper[d], prm.mesh.upper_right[d]) -
+                   std::max(prm.mesh.box_lower[d], prm.mesh.lower_left[d])) /
+        (prm.mesh.upper_right[d] - prm.mesh.lower_left[d]);
+    return n_cells *
+           (1 + in_box * (std::pow(2., dim * prm.mesh.local_refinements) - 1));
+  }
+
+
+
+  double
+  estimated_memory(const Parameters &prm)
+  {
+    return estimated_n_cells(prm) *
+           bytes_per_cell[prm.dim - 2][prm.solver.method == "direct"];
+  }
+
+
+
+  double
+  physical_memory()
+  {
+    const long pages     = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page_size > 0 ? double(pages) * page_size : 0.;
+  }
+
+
+
+  void
+  check_memory(const Parameters &prm)
+  {
+    const double needed = estimated_memory(prm);
+    const double have   = physical_memory();
+    if (have == 0 || needed <= have)
+      return;
+    std::ostringstream message;
+    message << std::setprecision(3) << "In <" << prm.file_name
+            << ">: the finest mesh would have about " << estimated_n_cells(prm)
+            << " cells and need at least " << needed / 1e9
+            << " GB, more than the " << have / 1e9
+            << " GB of memory of this machine. Lower Mesh/Subdivisions, "
+               "Mesh/Global refinements, Mesh/Local refinements or "
+               "Convergence study/Number of refinement levels.";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+} // namespace PolyFrac

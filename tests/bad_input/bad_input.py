@@ -1,0 +1,413 @@
+#!/usr/bin/python3
+"""Runs the polyfrac program on wrong inputs and checks what a user sees.
+
+Each case is one ctest test (bad_input/<case>): in a fresh directory it writes
+the case's files, runs `polyfrac ARGS`, and checks
+- the exit status (non-zero for every wrong input; 0 for --help, --version and
+  the inputs that are right although they look unusual),
+- that the message contains the expected text (what is wrong, the entry or
+  file, how to fix it) and none of the texts it must not contain,
+- that nothing that looks like a result was written: no convergence.csv and
+  no VTU file anywhere, and no output directory at all when the input is
+  refused before the mesh is built (stage "parse").
+
+  bad_input.py --list                  the case names
+  bad_input.py run POLYFRAC CASE DIR   one case, in DIR (emptied first);
+                                       exit status 77: skipped
+  bad_input.py table POLYFRAC DIR      all cases, a markdown table of the
+                                       inputs and first lines of the messages
+"""
+
+import os
+import pathlib
+import resource
+import shutil
+import subprocess
+import sys
+
+# A small 2D scene; each case appends its entries (later entries win).
+BASE_2D = """set Dimension = 2
+subsection Mesh
+  set Subdivisions = 4, 4
+end
+subsection Output
+  set Output directory = results
+  set Print timings = false
+  set Write VTU = true
+end
+"""
+
+BASE_3D = BASE_2D.replace("set Dimension = 2", "set Dimension = 3").replace(
+    "set Subdivisions = 4, 4", "set Subdivisions = 4, 4, 4")
+
+SEGMENT = "subsection Fractures\n  set Segments = 0, -0.5 : 0, 0.5\nend\n"
+CONTACT = "subsection Model\n  set Model = contact mechanics\nend\n"
+
+
+def section(name, **entries):
+    """A subsection with its entries (keyword = entry name, '_' for ' ')."""
+    lines = "".join("  set %s = %s\n" % (key.replace("_", " "), value)
+                    for key, value in entries.items())
+    return "subsection %s\n%s" % (name, lines) + "end\n"
+
+
+def case(input_text, expect, files=None, args=None, stage="parse", status=1,
+         absent=(), written=(), address_space=None, base=BASE_2D):
+    """One case: input_text (a sentence for the table), the message parts
+    expected, the files written (name -> text or bytes; "scene.prm" gets the
+    base scene in front), the arguments (default: scene.prm), the stage at
+    which the input is refused (parse: before any output; level: after
+    used_parameters.prm, before any result), the exit status, texts that
+    must not appear, files the run must write, a limit of the address
+    space (bytes) to run out of memory."""
+    if files is None:
+        files = {}
+    files = dict(files)
+    if "scene.prm" in files:
+        files["scene.prm"] = base + files["scene.prm"]
+    return dict(input=input_text, expect=expect, files=files,
+                args=["scene.prm"] if args is None else args, stage=stage,
+                status=status, absent=absent, written=written,
+                address_space=address_space)
+
+
+CASES = {
+    # The first hour: help, version, the command line.
+    "help": case("`polyfrac --help`",
+                 ["Usage: polyfrac [FILE.prm]", "--set Subsection/Entry=value",
+                  "--print-parameters [2|3]", "--version", "Where to start",
+                  "/prm/default.prm", "README.md",
+                  "taken from its directory"],
+                 args=["--help"], status=0),
+    "version": case("`polyfrac --version`", ["PolyFrac 0.1.0 (deal.II 9.4"],
+                    args=["--version"], status=0),
+    "print_parameters_bad_dimension": case(
+        "`polyfrac --print-parameters x`",
+        ["--print-parameters takes the dimension 2 or 3"],
+        args=["--print-parameters", "x"], absent=["stoi"]),
+    "unknown_option": case("`polyfrac --frobnicate`",
+                           ["Unknown option <--frobnicate>", "--help"],
+                           args=["--frobnicate"]),
+    "two_parameter_files": case("`polyfrac a.prm b.prm`",
+                                ["Unexpected argument <b.prm>"],
+                                args=["a.prm", "b.prm"]),
+    # Files.
+    "parameter_file_missing": case("`polyfrac missing.prm`",
+                                   ["The parameter file <missing.prm> does "
+                                    "not exist", "a relative path starts in "
+                                    "the current directory"],
+                                   args=["missing.prm"]),
+    "parameter_file_directory": case(
+        "a directory given as the parameter file",
+        ["The parameter file <scenes> is a directory, not a parameter file",
+         "it holds a.prm"],
+        files={"scenes/a.prm": BASE_2D}, args=["scenes"]),
+    "parameter_file_binary": case(
+        "a binary file given as the parameter file",
+        ["The parameter file <scene.gz> is not a text file (byte 0 is 31)"],
+        files={"scene.gz": b"\x1f\x8b\x08\x00\x00\x00"}, args=["scene.gz"]),
+    "include_missing": case(
+        "`include missing.prm` naming no file",
+        ["In <scene.prm>, line", "the included file <missing.prm> does not "
+         "exist", "relative to the directory of the parameter file"],
+        files={"scene.prm": "include missing.prm\n"}),
+    "include_relative_to_file": case(
+        "`sub/scene.prm` includes `common.prm` (next to it), `Output "
+        "directory = results`, run from elsewhere: right, outputs in "
+        "`sub/results`",
+        [], files={"sub/scene.prm": "include common.prm\n" + section(
+            "Output", Output_directory="results"),
+            "sub/common.prm": BASE_2D}, args=["sub/scene.prm"], status=0,
+        written=["sub/results/convergence.csv"]),
+    # The command line overrides.
+    "set_unknown_entry": case(
+        "`--set Mesh/Subdivisons=4,4` (typo)",
+        ["The command-line option --set \"Mesh/Subdivisons=4,4\": No entry "
+         "with name <Subdivisons>", "--print-parameters"],
+        files={"scene.prm": ""},
+        args=["scene.prm", "--set", "Mesh/Subdivisons=4,4"],
+        absent=["input string", "Line <"]),
+    "set_bad_value": case(
+        "`--set \"Mesh/Subdivisions=a, 4\"`",
+        ["--set \"Mesh/Subdivisions=a, 4\"", "does not match the given "
+         "pattern"],
+        files={"scene.prm": ""},
+        args=["scene.prm", "--set", "Mesh/Subdivisions=a, 4"],
+        absent=["input string", "Line <"]),
+    "set_dimension": case(
+        "`--set Dimension=3`",
+        ["--set \"Dimension=3\": Dimension cannot be overridden"],
+        files={"scene.prm": ""}, args=["scene.prm", "--set", "Dimension=3"]),
+    # Expressions: parsed before the mesh, finite where evaluated.
+    "expression_does_not_parse": case(
+        "body force `foo(x); 0`",
+        ["Entry <Body force/Function expression>: cannot parse <foo(x); 0>: "
+         "Unexpected token \"foo\" found at position 0."],
+        files={"scene.prm": section("Body force",
+                                    Function_expression="foo(x); 0")},
+        absent=["Message:", "Formula:", "Errc", "Mesh quality"]),
+    "body_force_not_finite": case(
+        "body force `1/0; 0`",
+        ["Entry <Body force/Function expression> is not finite at the point",
+         "<1/0> gives inf"],
+        files={"scene.prm": section("Body force",
+                                    Function_expression="1/0; 0")},
+        stage="level"),
+    "pressure_not_finite": case(
+        "fracture pressure `sqrt(-1)`",
+        ["Entry <Fractures/Pressure> is not finite at the point",
+         "gives NaN", "root or logarithm of a negative number"],
+        files={"scene.prm": SEGMENT + section("Fractures",
+                                              Pressure="sqrt(-1)")},
+        stage="level"),
+    "dirichlet_not_finite": case(
+        "Dirichlet data `log(x - 5); 0`",
+        ["Entry <Boundary conditions/Dirichlet expression> is not finite"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_expression="log(x - 5); 0")},
+        stage="level"),
+    "neumann_not_finite": case(
+        "Neumann traction `1/(x - 1); 0` on the face x = 1",
+        ["Entry <Boundary conditions/Neumann traction> is not finite at the "
+         "point (1 "],
+        files={"scene.prm": section("Boundary conditions",
+                                    Neumann_boundary_ids="1",
+                                    Neumann_traction="1/(x - 1); 0")},
+        stage="level"),
+    "traction_not_finite": case(
+        "fracture traction `0; 1/0`",
+        ["Entry <Fractures/Traction> is not finite"],
+        files={"scene.prm": SEGMENT + section("Fractures",
+                                              Traction="0; 1/0")},
+        stage="level"),
+    "tresca_threshold_not_finite": case(
+        "Tresca threshold `1/0` (was taken as infinite)",
+        ["Entry <Contact/Tresca threshold> is not finite"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Tresca", Tresca_threshold="1/0")},
+        stage="level"),
+    "exact_displacement_not_finite": case(
+        "exact displacement `sqrt(x - 2); 0`",
+        ["Entry <Exact solution/Displacement> is not finite"],
+        files={"scene.prm": section("Exact solution",
+                                    Displacement="sqrt(x - 2); 0")},
+        stage="level"),
+    "exact_jump_not_finite": case(
+        "exact displacement jump `1/0; 0`",
+        ["Entry <Exact solution/Displacement jump> is not finite"],
+        files={"scene.prm": SEGMENT + section("Exact solution",
+                                              Displacement_jump="1/0; 0")},
+        stage="level"),
+    "exact_contact_traction_not_finite": case(
+        "exact contact traction `log(-1); 0`",
+        ["Entry <Exact solution/Contact traction> is not finite"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="frictionless") + section(
+            "Exact solution", Contact_traction="log(-1); 0")},
+        stage="level"),
+    # Boundary ids.
+    "neumann_id_unknown": case(
+        "`Neumann boundary ids = 7` on a box (ids 0 to 3)",
+        ["Boundary conditions/Neumann boundary ids lists the id 7, which no "
+         "boundary face of the mesh carries. The mesh has the boundary ids "
+         "0, 1, 2, 3"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Neumann_boundary_ids="7")},
+        stage="level"),
+    "dirichlet_id_unknown": case(
+        "`Dirichlet boundary ids = 0, 9`",
+        ["Boundary conditions/Dirichlet boundary ids lists the id 9"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_boundary_ids="0, 9")},
+        stage="level"),
+    # Fracture geometry.
+    "duplicate_fractures": case(
+        "the same segment given twice",
+        ["Fractures 0 (0 -0.5 : 0 0.5) and 1 (0 -0.5 : 0 0.5) overlap",
+         "Remove the duplicate"],
+        files={"scene.prm": section(
+            "Fractures", Segments="0, -0.5 : 0, 0.5 ; 0, -0.5 : 0, 0.5")},
+        stage="level", absent=["not resolved"]),
+    "overlapping_fractures": case(
+        "segments (0,-0.5)-(0,0.5) and (0,0)-(0,1)",
+        ["Fractures 0 (0 -0.5 : 0 0.5) and 1 (0 0 : 0 1) overlap"],
+        files={"scene.prm": section(
+            "Fractures", Segments="0, -0.5 : 0, 0.5 ; 0, 0 : 0, 1")},
+        stage="level", absent=["not resolved"]),
+    "non_convex_polygon": case(
+        "a 3D polygon with a reflex vertex (an arrow)",
+        ["The fracture polygon -0.5 -0.5 0 : 0.5 -0.5 0 : 0 0 0 : 0.5 0.5 0 "
+         ": -0.5 0.5 0 is not convex (at its vertex 3)"],
+        files={"scene.prm": section(
+            "Fractures", Polygons="-0.5, -0.5, 0 : 0.5, -0.5, 0 : 0, 0, 0 : "
+            "0.5, 0.5, 0 : -0.5, 0.5, 0")},
+        base=BASE_3D, stage="level", absent=["not resolved"]),
+    # Solvers and meshes.
+    "singular_jacobian_with_bubbles": case(
+        "Tresca contact, Bubbles = true, a block cut off by a fracture "
+        "without Dirichlet boundary (singular at Newton iteration 46)",
+        ["the Newton Jacobian of the contact problem is singular",
+         "a part of the domain is free to move"],
+        files={"scene.prm": CONTACT + section(
+            "Fractures", Segments="0, -1 : 0, 1") + section(
+            "Contact", Friction_law="Tresca", Bubbles="true") + section(
+            "Boundary conditions", Dirichlet_boundary_ids="0",
+            Neumann_boundary_ids="1, 2, 3") + section(
+            "Body force", Function_expression="1; 1")},
+        stage="level", absent=["Use Bubbles = true", "set Bubbles = true"]),
+    "output_directory_unwritable": case(
+        "`Output directory = blocker/out` where blocker is a file",
+        ["cannot create the output directory <blocker/out> (Not a directory)",
+         "set Output/Output directory to a directory you can write"],
+        files={"scene.prm": section("Output",
+                                    Output_directory="blocker/out"),
+               "blocker": "a file\n"}),
+    "mesh_too_large": case(
+        "`Subdivisions = 100000, 100000`, `Global refinements = 12`",
+        ["the finest mesh would have about", "cells and need at least",
+         "GB of memory of this machine", "Lower Mesh/Subdivisions"],
+        files={"scene.prm": section("Mesh", Subdivisions="100000, 100000",
+                                    Global_refinements="12")},
+        absent=["bad_alloc"]),
+    "out_of_memory": case(
+        "a 512 x 512 mesh (estimated 1.7 GB) run with 1 GB of address space",
+        ["out of memory (std::bad_alloc)", "lower Mesh/Subdivisions"],
+        files={"scene.prm": section("Mesh", Subdivisions="512, 512")},
+        stage="level", address_space=10**9),
+    "negative_weights": case(
+        "`Cells per polytope = 32` on a 16 x 16 square mesh",
+        ["the mesh has negative weights", "lower Mesh/Cells per polytope "
+         "(now 32)"],
+        files={"scene.prm": section("Mesh", Subdivisions="16, 16",
+                                    Cells_per_polytope="32")},
+        stage="level"),
+    "lame_lambda_below_bound": case(
+        "`Lame lambda = -1`, `Lame mu = 1` in 2D",
+        ["<Lame lambda> = -1.000000 is not admissible",
+         "lambda > -2 mu/d = -1.000000"],
+        files={"scene.prm": section("Material", Lame_lambda="-1",
+                                    Lame_mu="1")}),
+    "lame_lambda_negative_admissible": case(
+        "`Lame lambda = -0.5`, `Lame mu = 1` in 2D: right, runs",
+        [], files={"scene.prm": section("Material", Lame_lambda="-0.5",
+                                        Lame_mu="1")}, status=0),
+    "lame_mu_zero": case(
+        "`Lame mu = 0`",
+        ["<Lame mu> must be > 0, not 0.000000"],
+        files={"scene.prm": section("Material", Lame_mu="0")}),
+}
+
+
+# The exit status of a skipped case (ctest's SKIP_RETURN_CODE).
+SKIPPED = 77
+
+
+def prepare(name, directory):
+    """Writes the files of case @p name into the empty @p directory."""
+    shutil.rmtree(directory, ignore_errors=True)
+    directory.mkdir(parents=True)
+    for file_name, content in CASES[name]["files"].items():
+        path = directory / file_name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if isinstance(content, bytes):
+            path.write_bytes(content)
+        else:
+            path.write_text(content)
+
+
+def execute(program, name, directory):
+    """Runs case @p name in @p directory; returns (status, stdout, stderr)."""
+    prepare(name, directory)
+    environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                       OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    limit = CASES[name]["address_space"]
+
+    def limit_address_space():
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+    run = subprocess.run([os.path.abspath(program)] + CASES[name]["args"],
+                         cwd=directory, capture_output=True, text=True,
+                         env=environment, timeout=600,
+                         preexec_fn=limit_address_space if limit else None)
+    return run.returncode, run.stdout, run.stderr
+
+
+def problems(name, directory, status, stdout, stderr):
+    """What is wrong with the outcome of case @p name (empty: passed)."""
+    spec = CASES[name]
+    found = []
+    text = stdout + stderr
+    if status != spec["status"]:
+        found.append("exit status %d, expected %d" % (status, spec["status"]))
+    for part in spec["expect"]:
+        if part not in text:
+            found.append("the message lacks <%s>" % part)
+    for part in spec["absent"]:
+        if part in text:
+            found.append("the message contains <%s>" % part)
+    for path in spec["written"]:
+        if not (directory / path).is_file():
+            found.append("%s was not written" % path)
+    if spec["status"] != 0:
+        results = [str(p.relative_to(directory)) for p in directory.rglob("*")
+                   if p.name == "convergence.csv" or p.suffix == ".vtu"]
+        if results:
+            found.append("results written: " + ", ".join(results))
+        if spec["stage"] == "parse" and (directory / "results").exists():
+            found.append("the output directory was created")
+    return found
+
+
+def sanitized(program):
+    """True if @p program runs under AddressSanitizer, whose shadow memory
+    needs more address space than any limit that makes a run fail."""
+    libraries = subprocess.run(["ldd", program], capture_output=True,
+                               text=True).stdout
+    return "libasan" in libraries
+
+
+def first_line(stdout, stderr):
+    """The first line of the error message (or of the output)."""
+    for line in (stderr or stdout).splitlines():
+        if line.strip():
+            return line.strip().replace("PolyFrac stopped: ", "")
+    return ""
+
+
+def main():
+    if sys.argv[1:] == ["--list"]:
+        print("\n".join(CASES))
+        return 0
+    if len(sys.argv) == 5 and sys.argv[1] == "run":
+        program, name, directory = sys.argv[2], sys.argv[3], sys.argv[4]
+        directory = pathlib.Path(directory)
+        if CASES[name]["address_space"] and sanitized(program):
+            print("skipped: an address-space limit cannot be combined with "
+                  "AddressSanitizer")
+            return SKIPPED
+        status, stdout, stderr = execute(program, name, directory)
+        print("$ polyfrac " + " ".join(CASES[name]["args"]))
+        print(stdout + stderr)
+        found = problems(name, directory, status, stdout, stderr)
+        for problem in found:
+            print("FAILED: " + problem)
+        return 1 if found else 0
+    if len(sys.argv) == 4 and sys.argv[1] == "table":
+        program, root = sys.argv[2], pathlib.Path(sys.argv[3])
+        print("| input | message (first line) | test |")
+        print("|---|---|---|")
+        for name, spec in CASES.items():
+            status, stdout, stderr = execute(program, name, root / name)
+            line = first_line(stdout, stderr) if spec["status"] != 0 else \
+                "(exit 0) " + first_line(stdout, "")
+            passed = not problems(name, root / name, status, stdout, stderr)
+            print("| %s | %s | `bad_input/%s`%s |" % (
+                spec["input"], line.replace("|", "\\|"), name,
+                "" if passed else " FAILS"))
+        return 0
+    print(__doc__)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
