@@ -55,6 +55,8 @@ for m in "${mutations[@]}"; do
              grep -oP '^\s*\d+ - \K\S+' | sed 's/\.release$//' | paste -sd, - |
              sed 's/,/, /g')
   echo "| $m | ${failed:-none} |"
+  # Restored with a new time stamp, so that the next build recompiles it.
   mv "$f.orig" "$f"
+  touch "$f"
 done
 cmake --build "$work/build" -j "$(nproc)" > "$work/build-restored.log"
