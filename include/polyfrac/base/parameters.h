@@ -187,9 +187,11 @@ namespace PolyFrac
      */
     struct ConvergenceChecks
     {
+      /** Maximum errors: the largest value each error may take. */
       std::map<std::string, double> maximum_errors;
+      /** Minimum rates: the smallest order each error must show. */
       std::map<std::string, double> minimum_rates;
-    } checks;
+    } checks; /**< Convergence study/Maximum errors and Minimum rates. */
 
     /** Contact (Model = contact mechanics). */
     struct ContactData

@@ -16,7 +16,9 @@ namespace PolyFrac
    */
   struct ConvergenceCheck
   {
-    unsigned int             n_checked = 0;
+    /** The number of bounds checked (one per level or pair of levels). */
+    unsigned int n_checked = 0;
+    /** One sentence per bound that does not hold. */
     std::vector<std::string> failures;
   };
 
