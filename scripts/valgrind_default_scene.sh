@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# valgrind memcheck of the default scene (prm/default.prm, all its levels,
+# VTU output into a temporary directory) with the Release build in build/
+# (bash scripts/setup.sh builds it). Exits non-zero on any invalid access, use
+# of uninitialised memory or definite leak. Leaks of OpenMPI's start-up and
+# shut-down are suppressed: Debian's openmpi-valgrind.supp and
+# tests/sanitizers/valgrind.supp. Extra arguments go to polyfrac, e.g.
+# --set "Convergence study/Number of refinement levels=1".
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mpi_suppressions=/usr/share/openmpi/openmpi-valgrind.supp
+[ -f "$mpi_suppressions" ] ||
+  { echo "$mpi_suppressions is missing: apt-get install openmpi-common"; exit 1; }
+[ -x build/polyfrac ] ||
+  { echo "build/polyfrac is missing: run bash scripts/setup.sh first"; exit 1; }
+
+output=$(mktemp -d)
+trap 'rm -rf "$output"' EXIT
+# Components stay loaded, so that leak stacks name OpenMPI's functions.
+export OMPI_MCA_mca_base_component_disable_dlclose=1
+valgrind --tool=memcheck --error-exitcode=1 --track-origins=yes \
+  --num-callers=50 --leak-check=full --show-leak-kinds=definite \
+  --errors-for-leak-kinds=definite \
+  --suppressions="$mpi_suppressions" \
+  --suppressions=tests/sanitizers/valgrind.supp \
+  build/polyfrac prm/default.prm \
+  --set "Output/Output directory=$output" "$@"
