@@ -5,6 +5,8 @@
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/contact/contact_mechanics.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <set>
 #include <sstream>
@@ -297,27 +299,37 @@ namespace PolyFrac
       }
     catch (const std::exception &)
       {
-        AssertThrow(
-          false,
-          ExcMessage(
-            "In <" + prm.file_name +
-            ">: the Newton Jacobian of the contact problem is singular "
-            "(UMFPACK) at iteration " +
-            std::to_string(iteration) +
-            ": the contact state leaves some unknowns undetermined. Usually "
-            "a part of the domain is free to move: a block cut off by the "
-            "fractures without Dirichlet boundary, held only by faces in "
-            "contact (free to slide when frictionless or slipping). Give "
-            "every such block a Dirichlet boundary (Boundary "
-            "conditions/Dirichlet boundary ids)" +
-            (prm.contact.bubbles ?
-               std::string(".") :
-               "; with Contact/Bubbles = false some multiplier patterns are "
-               "moreover invisible to the discrete jumps: set Bubbles = "
-               "true.")));
+        AssertThrow(false,
+                    ExcMessage(undetermined_message("UMFPACK finds it singular",
+                                                    iteration)));
       }
     direct.vmult(step, rhs);
     return {};
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactMechanics<dim>::undetermined_message(
+    const std::string &symptom,
+    const unsigned int iteration) const
+  {
+    return "In <" + prm.file_name +
+           ">: the Newton Jacobian of the contact problem is singular or "
+           "nearly so at iteration " +
+           std::to_string(iteration) + " (" + symptom +
+           "): the contact state leaves some unknowns undetermined. Usually "
+           "a part of the domain is free to move: a block cut off by the "
+           "fractures without Dirichlet boundary, held only by faces in "
+           "contact (free to slide when frictionless or slipping), or by "
+           "none once they open. Give every such block a Dirichlet boundary "
+           "(Boundary conditions/Dirichlet boundary ids)" +
+           (prm.contact.bubbles ?
+              std::string(".") :
+              "; with Contact/Bubbles = false some multiplier patterns are "
+              "moreover invisible to the discrete jumps: set Bubbles = "
+              "true.");
   }
 
 
@@ -429,6 +441,19 @@ namespace PolyFrac
             << "; open " << n_open << ", stick " << n_stick << ", slip "
             << n_slip << std::endl;
 
+        // After the first step the momentum equation is linear in the
+        // unknowns and holds to round-off: a relative residual of 1e10 (or
+        // one that is not finite) means that the last linear solve blew up
+        // on a (nearly) singular Jacobian.
+        if (!(R.momentum < 1e10))
+          {
+            std::ostringstream symptom;
+            symptom << "the momentum residual is " << std::setprecision(3)
+                    << R.momentum << " times the load";
+            AssertThrow(false,
+                        ExcMessage(undetermined_message(symptom.str(), it)));
+          }
+
         if (states == last_states && R.momentum < prm.nonlinear.tolerance &&
             R.complementarity < prm.nonlinear.tolerance)
           return true;
@@ -461,6 +486,12 @@ namespace PolyFrac
         Vector<double>                    step;
         const std::optional<unsigned int> cg_iterations =
           linear_step(R, it, step);
+        AssertThrow(
+          std::all_of(step.begin(),
+                      step.end(),
+                      [](const double v) { return std::isfinite(v); }),
+          ExcMessage(
+            undetermined_message("the Newton step is not finite", it)));
         if (cg_iterations)
           out << "    condensed step: " << *cg_iterations << " CG iterations"
               << std::endl;

@@ -203,6 +203,16 @@ namespace PolyFrac
                 Vector<double>    &step);
 
     /**
+     * The error message for a Newton Jacobian that is singular or nearly
+     * so (@p symptom: what showed it) at Newton iteration @p iteration:
+     * some unknowns are undetermined by the contact state, usually a block
+     * free to move.
+     */
+    std::string
+    undetermined_message(const std::string &symptom,
+                         const unsigned int iteration) const;
+
+    /**
      * The primal-dual active set step with the states of @p start: from
      * its multipliers (scaled by @p load, which fix the slip directions),
      * one linearised step in which each face keeps its given state.
