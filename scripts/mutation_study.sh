@@ -39,6 +39,19 @@ expression[normal]='s/(result\.emplace_back\(dofs\.n_node_sides\(\) \+ i, 1\.\);
 cmake -S "$work/src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release > "$work/cmake.log"
 cmake --build "$work/build" -j "$(nproc)" > "$work/build.log"
 
+# A failing test is marked (check) when its program stopped (a check of
+# the test itself: an assertion, a convergence check, a comparison), and
+# (diff) when it ran through and only numdiff found its output changed.
+classify() {
+  local test=$1 dir
+  dir=$work/build/tests/${test%.*}.${test##*.}
+  if [ -d "$dir" ] && [ -f "$dir/failing_diff" ]; then
+    echo "${test%.release} (diff)"
+  else
+    echo "${test%.release} (check)"
+  fi
+}
+
 echo "| mutation | tests that fail |"
 echo "|---|---|"
 for m in "${mutations[@]}"; do
@@ -50,9 +63,11 @@ for m in "${mutations[@]}"; do
     exit 1
   fi
   cmake --build "$work/build" -j "$(nproc)" > "$work/build-$m.log" 2>&1
+  find "$work/build/tests" -name 'failing_*' -delete
   (cd "$work/build" && ctest -j "$(nproc)" > "$work/ctest-$m.log" 2>&1) || true
   failed=$(sed -n '/The following tests FAILED/,$p' "$work/ctest-$m.log" |
-             grep -oP '^\s*\d+ - \K\S+' | sed 's/\.release$//' | paste -sd, - |
+             grep -oP '^\s*\d+ - \K\S+' |
+             while read -r t; do classify "$t"; done | paste -sd, - |
              sed 's/,/, /g')
   echo "| $m | ${failed:-none} |"
   # Restored with a new time stamp, so that the next build recompiles it.
