@@ -13,8 +13,10 @@ namespace PolyFrac
     void
     write_csv(std::ostream &out, const std::vector<ConvergenceRow> &rows)
     {
-      out << "level,h,n_cells,n_dofs,err_u,err_grad_u,err_jump,"
-             "err_lambda_hm12,err_lambda_l2,newton_iterations,wall_seconds\n";
+      out << "level,h,n_cells,n_dofs";
+      for (const auto &column : error_columns())
+        out << ',' << column.first;
+      out << ",newton_iterations,wall_seconds\n";
       out << std::setprecision(8);
       for (const ConvergenceRow &row : rows)
         {
