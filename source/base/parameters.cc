@@ -4,9 +4,12 @@
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/base/parameters.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <tuple>
@@ -457,6 +460,16 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Exact lambda on the fractures, global components (adds "
                       "err_lambda_l2 and err_lambda_hm12).");
+    prm.declare_entry("Matrix pressure",
+                      "",
+                      Patterns::Anything(),
+                      "Exact matrix pressure p_m, an expression in x, y (, z), "
+                      "t (adds err_pressure).");
+    prm.declare_entry("Fracture pressure",
+                      "",
+                      Patterns::Anything(),
+                      "Exact fracture pressure p_f, an expression in x, y (, "
+                      "z), t (adds err_fracture_pressure).");
     prm.leave_subsection();
 
     prm.enter_subsection("Convergence study");
@@ -522,6 +535,91 @@ namespace PolyFrac
       "Step k scales body force, Dirichlet and Neumann data and "
       "p_f by k/N (not the friction data). A continuation for "
       "Tresca and frictionless; quasi-static steps for Coulomb.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Flow");
+    prm.declare_entry("Permeability",
+                      "1e-15",
+                      Patterns::Anything(),
+                      "Matrix permeability K_m >= 0 (isotropic, m^2), an "
+                      "expression in x, y (, z) evaluated at the cell "
+                      "centroids. 0 everywhere with Inverse Biot modulus = 0: "
+                      "the matrix is not solved for (fracture flow alone).");
+    prm.declare_entry("Viscosity",
+                      "1e-3",
+                      Patterns::Double(),
+                      "Fluid viscosity eta > 0 (Pa s).");
+    prm.declare_entry("Biot coefficient",
+                      "0.5",
+                      Patterns::Double(),
+                      "Biot coefficient b in [0, 1] (poromechanics).");
+    prm.declare_entry("Inverse Biot modulus",
+                      "1e-10",
+                      Patterns::Double(),
+                      "1/M >= 0 (1/Pa); 0: incompressible fluid and grains. "
+                      "The matrix storage coefficient of Model = flow.");
+    prm.declare_entry("Initial porosity",
+                      "0.1",
+                      Patterns::Double(),
+                      "Initial porosity phi^0 in [0, 1) (poromechanics).");
+    prm.declare_entry("Initial pressure",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial pressure of matrix and fractures, an expression "
+                      "in x, y (, z).");
+    prm.declare_entry("Fracture aperture at contact",
+                      "1e-4",
+                      Patterns::Double(),
+                      "d_0 >= 0 (m): the hydraulic aperture of a closed "
+                      "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n).");
+    prm.declare_entry("Minimum fracture aperture",
+                      "1e-5",
+                      Patterns::Double(),
+                      "Floor > 0 (m) of d_f in the cubic law C_f = d_f^3/12, "
+                      "so that a closed fracture still conducts.");
+    prm.declare_entry("Fracture normal transmissibility",
+                      "1e-9",
+                      Patterns::Double(),
+                      "Lambda_f >= 0 (m/(Pa s)): the exchange flux from a "
+                      "matrix side into the fracture is Lambda_f (p_m trace - "
+                      "p_f).");
+    prm.declare_entry("Matrix source",
+                      "0",
+                      Patterns::Anything(),
+                      "h_m: volume per volume per second, an expression in x, "
+                      "y (, z), t.");
+    prm.declare_entry("Fracture source",
+                      "0",
+                      Patterns::Anything(),
+                      "h_f: volume per fracture area per second, an expression "
+                      "in x, y (, z), t.");
+    prm.declare_entry("Pressure boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids with a prescribed pressure; fracture edges "
+                      "on these boundaries take the same pressure.");
+    prm.declare_entry("Pressure boundary expression",
+                      "0",
+                      Patterns::Anything(),
+                      "Pressure on the Pressure boundary ids, an expression in "
+                      "x, y (, z), t.");
+    prm.declare_entry("Flux boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids with a prescribed outward flux; every "
+                      "other boundary face and fracture edge is no-flow.");
+    prm.declare_entry("Flux boundary expression",
+                      "0",
+                      Patterns::Anything(),
+                      "Outward volume flux per area on the Flux boundary ids, "
+                      "an expression in x, y (, z), t.");
+    prm.declare_entry("HFV stabilisation",
+                      "auto",
+                      Patterns::Anything(),
+                      "alpha > 0 of the hybrid finite volume stabilisation, "
+                      "or auto: sqrt(d) in the matrix and sqrt(d-1) in the "
+                      "fractures (Eymard, Gallouet, Herbin 2010). Affine "
+                      "pressures are exact for every alpha.");
     prm.leave_subsection();
 
     prm.enter_subsection("Nonlinear solver");
@@ -817,6 +915,8 @@ namespace PolyFrac
       exact.contact_traction =
         checked_vector_expression("Exact solution/Contact traction",
                                   exact.contact_traction);
+    exact.matrix_pressure   = prm->get("Matrix pressure");
+    exact.fracture_pressure = prm->get("Fracture pressure");
     prm->leave_subsection();
 
     prm->enter_subsection("Convergence study");
@@ -830,7 +930,9 @@ namespace PolyFrac
       for (const auto &[column, bound] : *bounds)
         {
           const std::string &field =
-            column == "err_jump" ? exact.displacement_jump :
+            column == "err_pressure"          ? exact.matrix_pressure :
+            column == "err_fracture_pressure" ? exact.fracture_pressure :
+            column == "err_jump"              ? exact.displacement_jump :
             column.find("lambda") != std::string::npos ?
                                    exact.contact_traction :
                                    exact.displacement;
@@ -882,6 +984,8 @@ namespace PolyFrac
     contact.n_load_steps = prm->get_integer("Number of load steps");
     prm->leave_subsection();
 
+    read_flow();
+
     prm->enter_subsection("Nonlinear solver");
     nonlinear.max_iterations = prm->get_integer("Maximum iterations");
     nonlinear.tolerance      = prm->get_double("Tolerance");
@@ -913,6 +1017,86 @@ namespace PolyFrac
                            ">: Model = poromechanics is not available in this "
                            "version of PolyFrac; use elasticity or contact "
                            "mechanics."));
+  }
+
+
+
+  void
+  Parameters::read_flow()
+  {
+    prm->enter_subsection("Flow");
+    const std::string where   = "In <" + file_name + ">, subsection <Flow>: ";
+    const auto        bounded = [&](const std::string &entry,
+                             const double       lower,
+                             const double       upper,
+                             const bool         strict_lower,
+                             const std::string &range) {
+      const double value = prm->get_double(entry);
+      AssertThrow((strict_lower ? value > lower : value >= lower) &&
+                    value <= upper,
+                  ExcMessage(where + "<" + entry + "> must be " + range +
+                             ", not " + prm->get(entry) + "."));
+      return value;
+    };
+    const double infinity = std::numeric_limits<double>::max();
+    flow.permeability     = prm->get("Permeability");
+    flow.viscosity = bounded("Viscosity", 0, infinity, true, "> 0 (Pa s)");
+    flow.biot_coefficient =
+      bounded("Biot coefficient", 0, 1, false, "in [0, 1]");
+    flow.inverse_biot_modulus =
+      bounded("Inverse Biot modulus", 0, infinity, false, ">= 0 (1/Pa)");
+    flow.initial_porosity = bounded(
+      "Initial porosity", 0, std::nextafter(1., 0.), false, "in [0, 1)");
+    flow.initial_pressure = prm->get("Initial pressure");
+    flow.aperture_at_contact =
+      bounded("Fracture aperture at contact", 0, infinity, false, ">= 0 (m)");
+    flow.minimum_aperture =
+      bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
+    flow.normal_transmissibility = bounded("Fracture normal transmissibility",
+                                           0,
+                                           infinity,
+                                           false,
+                                           ">= 0 (m/(Pa s))");
+    flow.matrix_source           = prm->get("Matrix source");
+    flow.fracture_source         = prm->get("Fracture source");
+    flow.pressure_ids.clear();
+    flow.flux_ids.clear();
+    for (const std::string &s :
+         Utilities::split_string_list(prm->get("Pressure boundary ids")))
+      flow.pressure_ids.push_back(Utilities::string_to_int(s));
+    for (const std::string &s :
+         Utilities::split_string_list(prm->get("Flux boundary ids")))
+      {
+        const unsigned int id = Utilities::string_to_int(s);
+        AssertThrow(std::find(flow.pressure_ids.begin(),
+                              flow.pressure_ids.end(),
+                              id) == flow.pressure_ids.end(),
+                    ExcMessage(where + "boundary id " + s +
+                               " is both a Pressure and a Flux boundary id; "
+                               "give each boundary one kind of flow data."));
+        flow.flux_ids.push_back(id);
+      }
+    flow.pressure_expression = prm->get("Pressure boundary expression");
+    flow.flux_expression     = prm->get("Flux boundary expression");
+    const std::string alpha  = Utilities::trim(prm->get("HFV stabilisation"));
+    flow.stabilisation       = 0;
+    if (alpha != "auto")
+      {
+        try
+          {
+            flow.stabilisation = Utilities::string_to_double(alpha);
+          }
+        catch (...)
+          {
+            flow.stabilisation = -1;
+          }
+        AssertThrow(flow.stabilisation > 0 && std::isfinite(flow.stabilisation),
+                    ExcMessage(where +
+                               "<HFV stabilisation> must be auto or a "
+                               "positive number, not <" +
+                               alpha + ">."));
+      }
+    prm->leave_subsection();
   }
 
 
@@ -959,7 +1143,15 @@ namespace PolyFrac
         {"Contact/Tresca threshold", contact.tresca_threshold, 1},
         {"Exact solution/Displacement", exact.displacement, dim},
         {"Exact solution/Displacement jump", exact.displacement_jump, dim},
-        {"Exact solution/Contact traction", exact.contact_traction, dim}};
+        {"Exact solution/Contact traction", exact.contact_traction, dim},
+        {"Exact solution/Matrix pressure", exact.matrix_pressure, 1},
+        {"Exact solution/Fracture pressure", exact.fracture_pressure, 1},
+        {"Flow/Permeability", flow.permeability, 1},
+        {"Flow/Initial pressure", flow.initial_pressure, 1},
+        {"Flow/Matrix source", flow.matrix_source, 1},
+        {"Flow/Fracture source", flow.fracture_source, 1},
+        {"Flow/Pressure boundary expression", flow.pressure_expression, 1},
+        {"Flow/Flux boundary expression", flow.flux_expression, 1}};
     for (const auto &[entry, expression, n_components] : entries)
       if (!expression.empty())
         {

@@ -49,6 +49,28 @@ namespace PolyFrac
       return sums;
     }
 
+    /**
+     * The relative (or, where the exact field vanishes, absolute) error
+     * (Σ_i m_i (p(x_i) − p_i)²)^{1/2} / (Σ_i m_i p(x_i)²)^{1/2} of the values
+     * @p discrete at the points @p points with measures @p measures.
+     */
+    template <int dim>
+    ErrorValue
+    pointwise_error(const Function<dim>           &exact,
+                    const std::vector<Point<dim>> &points,
+                    const std::vector<double>     &measures,
+                    const std::vector<double>     &discrete)
+    {
+      double error = 0, norm = 0;
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const double value = exact.value(points[i]);
+          error += measures[i] * std::pow(value - discrete[i], 2);
+          norm += measures[i] * value * value;
+        }
+      return ratio(error, norm);
+    }
+
     /** The exact jump [u] of the parameter file. */
     template <int dim>
     std::unique_ptr<FunctionParser<dim>>
@@ -71,7 +93,9 @@ namespace PolyFrac
       {"err_grad_u", &Errors::grad_u},
       {"err_jump", &Errors::jump},
       {"err_lambda_hm12", &Errors::lambda_hm12},
-      {"err_lambda_l2", &Errors::lambda_l2}};
+      {"err_lambda_l2", &Errors::lambda_l2},
+      {"err_pressure", &Errors::pressure},
+      {"err_fracture_pressure", &Errors::fracture_pressure}};
     return columns;
   }
 
@@ -151,6 +175,58 @@ namespace PolyFrac
 
 
   template <int dim>
+  void
+  add_pressure_errors(const Parameters           &prm,
+                      const MeshGeometry<dim>    &geometry,
+                      const FractureNetwork<dim> &network,
+                      const Flow<dim>            &flow,
+                      const Vector<double>       &pressure,
+                      const double                time,
+                      Errors                     &errors)
+  {
+    if (!prm.exact.matrix_pressure.empty())
+      {
+        const auto exact =
+          make_expression<dim>("Exact solution/Matrix pressure",
+                               prm.exact.matrix_pressure,
+                               1,
+                               prm.constants);
+        exact->set_time(time);
+        std::vector<Point<dim>> points;
+        std::vector<double>     measures;
+        for (const auto &cell : geometry.cells)
+          {
+            points.push_back(cell.centroid);
+            measures.push_back(cell.measure);
+          }
+        errors.pressure = pointwise_error(*exact,
+                                          points,
+                                          measures,
+                                          flow.cell_pressures(pressure));
+      }
+    if (!prm.exact.fracture_pressure.empty())
+      {
+        const auto exact =
+          make_expression<dim>("Exact solution/Fracture pressure",
+                               prm.exact.fracture_pressure,
+                               1,
+                               prm.constants);
+        exact->set_time(time);
+        std::vector<Point<dim>> points;
+        std::vector<double>     measures;
+        for (const auto &ff : network.fracture_faces)
+          {
+            points.push_back(geometry.faces[ff.face].centroid);
+            measures.push_back(geometry.faces[ff.face].measure);
+          }
+        errors.fracture_pressure = pointwise_error(
+          *exact, points, measures, flow.fracture_pressures(pressure));
+      }
+  }
+
+
+
+  template <int dim>
   std::optional<MaximumOpening>
   maximum_opening(const Parameters               &prm,
                   const MeshGeometry<dim>        &geometry,
@@ -194,6 +270,22 @@ namespace PolyFrac
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
                  const Elasticity<3> &);
+  template void
+  add_pressure_errors(const Parameters &,
+                      const MeshGeometry<2> &,
+                      const FractureNetwork<2> &,
+                      const Flow<2> &,
+                      const Vector<double> &,
+                      const double,
+                      Errors &);
+  template void
+  add_pressure_errors(const Parameters &,
+                      const MeshGeometry<3> &,
+                      const FractureNetwork<3> &,
+                      const Flow<3> &,
+                      const Vector<double> &,
+                      const double,
+                      Errors &);
   template std::optional<MaximumOpening>
   maximum_opening(const Parameters &,
                   const MeshGeometry<2> &,

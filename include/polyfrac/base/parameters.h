@@ -176,6 +176,10 @@ namespace PolyFrac
       std::string displacement_jump;
       /** Contact traction λ on the fractures. */
       std::string contact_traction;
+      /** Matrix pressure p_m (adds err_pressure). */
+      std::string matrix_pressure;
+      /** Fracture pressure p_f (adds err_fracture_pressure). */
+      std::string fracture_pressure;
     } exact; /**< The subsection Exact solution. */
 
     /** Convergence study/Number of refinement levels. */
@@ -209,6 +213,48 @@ namespace PolyFrac
       /** Number of load steps N: step k scales the loads by k/N. */
       unsigned int n_load_steps;
     } contact; /**< The subsection Contact. */
+
+    /**
+     * Flow (doc/scheme.md §1, §7): Darcy flow in the matrix, Poiseuille flow
+     * (cubic law) in the fractures, exchange through a normal
+     * transmissibility. Expressions are in x, y (, z) and t.
+     */
+    struct FlowData
+    {
+      /** Permeability K_m ≥ 0 of the matrix (isotropic), an expression. */
+      std::string permeability;
+      /** Viscosity η > 0 of the fluid. */
+      double viscosity;
+      /** Biot coefficient b in [0, 1] (poromechanics). */
+      double biot_coefficient;
+      /** Inverse Biot modulus 1/M ≥ 0: the storage of Model = flow. */
+      double inverse_biot_modulus;
+      /** Initial porosity φ^0 in [0, 1) (poromechanics). */
+      double initial_porosity;
+      /** Initial pressure p^0 of matrix and fractures, an expression. */
+      std::string initial_pressure;
+      /** Fracture aperture at contact d_0 ≥ 0: d_f = d_0 − [u]_n. */
+      double aperture_at_contact;
+      /** Minimum fracture aperture > 0: the floor of d_f in the cubic law. */
+      double minimum_aperture;
+      /** Fracture normal transmissibility Λ_f ≥ 0. */
+      double normal_transmissibility;
+      /** Matrix source h_m, an expression. */
+      std::string matrix_source;
+      /** Fracture source h_f, an expression. */
+      std::string fracture_source;
+      /** Pressure boundary ids (matrix faces and fracture edges). */
+      std::vector<unsigned int> pressure_ids;
+      /** Pressure boundary expression. */
+      std::string pressure_expression;
+      /** Flux boundary ids. */
+      std::vector<unsigned int> flux_ids;
+      /** Flux boundary expression: outward volume flux per area. */
+      std::string flux_expression;
+      /** HFV stabilisation α > 0, or 0 for auto (√d in the matrix,
+       * √(d−1) in the fractures). */
+      double stabilisation;
+    } flow; /**< The subsection Flow. */
 
     /** Nonlinear solver (semi-smooth Newton). */
     struct NonlinearData
@@ -257,6 +303,11 @@ namespace PolyFrac
      * throws naming the argument. */
     void
     apply_override(const std::string &entry);
+
+    /** Reads and validates the subsection Flow; throws naming the file
+     * and the entry. */
+    void
+    read_flow();
 
     /** Throws unless mu > 0 and lambda > -2 mu/dim. */
     void

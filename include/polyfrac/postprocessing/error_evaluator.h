@@ -4,6 +4,7 @@
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/flow.h>
 
 #include <optional>
 #include <string>
@@ -49,6 +50,12 @@ namespace PolyFrac
     std::optional<ErrorValue> lambda_hm12;
     /** err_lambda_l2. */
     std::optional<ErrorValue> lambda_l2;
+    /** err_pressure = (Σ_K |K| (p(x̄_K) − p_K)²)^{1/2} / (Σ_K |K|
+     * p(x̄_K)²)^{1/2}. */
+    std::optional<ErrorValue> pressure;
+    /** err_fracture_pressure, the same over the fracture faces with |σ| and
+     * x̄_σ. */
+    std::optional<ErrorValue> fracture_pressure;
   };
 
   /** An error column of convergence.csv: its name and its member of Errors. */
@@ -68,6 +75,22 @@ namespace PolyFrac
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
                  const Elasticity<dim>      &elasticity);
+
+  /**
+   * Sets err_pressure and err_fracture_pressure of @p errors (doc/scheme.md
+   * §8) for the pressures @p pressure of @p flow at time @p time, against
+   * Exact solution/Matrix pressure and Fracture pressure of @p prm (each
+   * when given).
+   */
+  template <int dim>
+  void
+  add_pressure_errors(const Parameters           &prm,
+                      const MeshGeometry<dim>    &geometry,
+                      const FractureNetwork<dim> &network,
+                      const Flow<dim>            &flow,
+                      const Vector<double>       &pressure,
+                      const double                time,
+                      Errors                     &errors);
 
   /**
    * The largest opening −[[u_D]]_σ·n^+ over the fracture faces in state

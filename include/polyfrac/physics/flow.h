@@ -1,0 +1,215 @@
+#ifndef polyfrac_physics_flow_h
+#define polyfrac_physics_flow_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/base/expressions.h>
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/dofs/pressure_dof_map.h>
+#include <polyfrac/fractures/fracture_edges.h>
+#include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_geometry.h>
+
+#include <memory>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The coefficients of one implicit Euler step t^{n−1} → t^n of Flow that
+   * the model chooses, one entry per cell or per fracture face:
+   * - Model = flow: c_K = 1/M (Flow/Inverse Biot modulus), a_σ = 0, r = 0
+   *   and the aperture d_0 (Flow::flow_step_data());
+   * - fixed-stress poromechanics: c_K = 1/M + L, r_K = −b div_K(u^k −
+   *   u^{n−1})/Δt + L p_K^k/Δt, a_σ = the fracture relaxation, r_σ = −(d^k −
+   *   d^{n−1})/Δt, d_σ = d_0 − [[u^k]]_{σ,n}.
+   */
+  struct FlowStepData
+  {
+    /** t^n, where the sources and boundary data are evaluated. */
+    double time = 0;
+    /** Δt = t^n − t^{n−1} > 0. */
+    double time_step = 1;
+    /** c_K ≥ 0: storage of cell K per unit pressure. */
+    std::vector<double> storage;
+    /** a_σ ≥ 0: storage of fracture face σ per unit pressure (a length). */
+    std::vector<double> fracture_storage;
+    /** r_K: a source per volume added to h_m in cell K. */
+    std::vector<double> cell_rhs;
+    /** r_σ: a source per area added to h_f on fracture face σ. */
+    std::vector<double> fracture_rhs;
+    /** d_σ: the aperture of fracture face σ (floored at Flow/Minimum
+     * fracture aperture in the cubic law). */
+    std::vector<double> apertures;
+  };
+
+  /**
+   * Matrix and fracture flow (doc/scheme.md §1, §7), discretised by hybrid
+   * finite volumes (hfv_matrix()) on the polytopal matrix mesh and on the
+   * (d−1)-dimensional mesh of the fracture faces and edges, with
+   * discontinuous matrix pressures across the fractures. One implicit
+   * Euler step solves, for the unknowns of PressureDoFMap:
+   *
+   * - cell K: |K| c_K (p_K − p_K^{n−1})/Δt + Σ_σ F_{Kσ}(p) = |K| (h_m(x̄_K)
+   *   + r_K), with F_{Kσ} = −(K_m(x̄_K)/η) (A_K p)_σ;
+   * - matrix face σ: F_{Kσ} + F_{Lσ} = 0 inside, p_σ = g_p(x̄_σ) on the
+   *   Pressure boundary ids, F_{Kσ} = |σ| g_F(x̄_σ) on the Flux boundary
+   *   ids, F_{Kσ} = 0 elsewhere on ∂Ω;
+   * - fracture face σ, side K: F_{Kσ} = T_σ (p_{Kσ} − p_{f,σ}), T_σ = |σ| Λ_f
+   *   (the exchange flux of doc/scheme.md §1, Λ_f given by Flow/Fracture
+   *   normal transmissibility);
+   * - fracture face σ: |σ| a_σ (p_{f,σ} − p_{f,σ}^{n−1})/Δt + Σ_e F_{σe}
+   *   − Σ_{±} T_σ (p_{±σ} − p_{f,σ}) = |σ| (h_f(x̄_σ) + r_σ), F_{σe} =
+   *   −(C_σ/η) (B_σ p_f)_e, C_σ = max(d_σ, d_min)³/12 (cubic law);
+   * - fracture edge e: Σ_σ F_{σe} = 0 (Kirchhoff, also at intersections;
+   *   at a tip, no flow), p_e = g_p(x_e) on a Pressure boundary id, no flow
+   *   on the other boundary ids.
+   *
+   * Sources and boundary data are evaluated at t^n at the centroids
+   * (one-point rules). The system is symmetric positive definite once a
+   * pressure is prescribed or some storage is positive; it is solved by
+   * UMFPACK (Linear solver/Method = direct) or CG + AMG. A cell with
+   * K_m(x̄_K) = 0 and c_K = 0 has no equation: it is not solved for and
+   * keeps its previous pressure; an impermeable cell's fracture sides exchange
+   * nothing; every matrix face unknown that no permeable cell sees keeps its
+   * previous value too (so an impermeable matrix without storage leaves
+   * fracture flow alone).
+   *
+   * The state (the pressure vector) is separate: solve_step() maps the
+   * previous pressures to the new ones.
+   *
+   * @code
+   *   const Flow<dim> flow(prm, geometry, network, edges, pressure_dofs);
+   *   Vector<double>  p = flow.initial_pressure();
+   *   const Vector<double> previous = p;
+   *   flow.solve_step(flow.flow_step_data(t, dt), previous, p);
+   * @endcode
+   */
+  template <int dim>
+  class Flow
+  {
+  public:
+    /** The flow of the scene @p prm on the mesh of @p geometry; all
+     * arguments must outlive it. Throws naming the entry if a Pressure or
+     * Flux boundary id is on no boundary face or the permeability is
+     * negative somewhere. */
+    Flow(const Parameters           &prm,
+         const MeshGeometry<dim>    &geometry,
+         const FractureNetwork<dim> &network,
+         const FractureEdges<dim>   &edges,
+         const PressureDoFMap<dim>  &dofs);
+
+    /** The step data of Model = flow at @p time with step @p time_step:
+     * c_K = 1/M, a_σ = 0, no extra sources, apertures d_0. */
+    FlowStepData
+    flow_step_data(const double time, const double time_step) const;
+
+    /** Flow/Initial pressure at the cell, face, fracture face and edge
+     * centroids. */
+    Vector<double>
+    initial_pressure() const;
+
+    /** One implicit Euler step: the pressures @p pressure at t^n from
+     * those at t^{n−1}, @p previous. Returns the CG iterations (0 with
+     * UMFPACK). */
+    unsigned int
+    solve_step(const FlowStepData   &data,
+               const Vector<double> &previous,
+               Vector<double>       &pressure) const;
+
+    /** The largest mass balance residual of the cell and fracture face
+     * equations, relative to the largest term of its equation. */
+    double
+    mass_balance_residual(const FlowStepData   &data,
+                          const Vector<double> &previous,
+                          const Vector<double> &pressure) const;
+
+    /** p_K per cell. */
+    std::vector<double>
+    cell_pressures(const Vector<double> &pressure) const;
+
+    /** p_{f,σ} per fracture face. */
+    std::vector<double>
+    fracture_pressures(const Vector<double> &pressure) const;
+
+    /** F_{Kσ} of cell @p c, in the order of its faces (outward). */
+    std::vector<double>
+    cell_fluxes(const unsigned int c, const Vector<double> &pressure) const;
+
+    /** F_{σe} of fracture face @p i with apertures @p apertures, in the
+     * order of its edges (outward). */
+    std::vector<double>
+    fracture_fluxes(const unsigned int         i,
+                    const std::vector<double> &apertures,
+                    const Vector<double>      &pressure) const;
+
+    /** The Darcy velocity per cell, (1/|K|) Σ_σ F_{Kσ} (x̄_σ − x̄_K) (exact
+     * for a constant velocity on planar faces). */
+    std::vector<Tensor<1, dim>>
+    darcy_velocities(const Vector<double> &pressure) const;
+
+    /** The fracture flux per width per face, (1/|σ|) Σ_e F_{σe} (x_e −
+     * x̄_σ), a vector in the plane of σ (exact for a constant flux). */
+    std::vector<Tensor<1, dim>>
+    fracture_velocities(const std::vector<double> &apertures,
+                        const Vector<double>      &pressure) const;
+
+    /** C_σ/η = max(d, d_min)³/(12 η), the fracture conductivity. */
+    double
+    fracture_conductivity(const double aperture) const;
+
+    /** K_m(x̄_K)/η of cell @p c. */
+    double
+    mobility(const unsigned int c) const
+    {
+      return cell_mobility[c];
+    }
+
+  private:
+    /** The linear system of one step: matrix, right-hand side and the
+     * constraints (pressure data, inactive cells). */
+    void
+    assemble(const FlowStepData        &data,
+             const Vector<double>      &previous,
+             AffineConstraints<double> &constraints,
+             SparsityPattern           &sparsity,
+             SparseMatrix<double>      &matrix,
+             Vector<double>            &rhs) const;
+
+    /** Global unknowns of cell @p c: p_K, then its face unknowns. */
+    std::vector<types::global_dof_index>
+    cell_dofs(const unsigned int c) const;
+
+    /** Global unknowns of fracture face @p i: p_{f,σ}, then its edges. */
+    std::vector<types::global_dof_index>
+    fracture_dofs(const unsigned int i) const;
+
+    /** Whether cell @p c has an equation (K_m > 0 or c_K > 0). A cell
+     * with K_m = 0 exchanges nothing with the fractures. */
+    bool
+    active(const unsigned int c, const FlowStepData &data) const;
+
+    const Parameters           &prm;
+    const MeshGeometry<dim>    &geometry;
+    const FractureNetwork<dim> &network;
+    const FractureEdges<dim>   &edges;
+    const PressureDoFMap<dim>  &dofs;
+    /** K_m(x̄_K)/η per cell. */
+    std::vector<double> cell_mobility;
+    /** The HFV matrices of the cells, unit mobility. */
+    std::vector<FullMatrix<double>> cell_matrices;
+    /** The HFV matrices of the fracture faces, unit conductivity. */
+    std::vector<FullMatrix<double>> fracture_matrices;
+    /** Sources and boundary data. */
+    std::unique_ptr<Expression<dim>> matrix_source, fracture_source,
+      boundary_pressure, boundary_flux;
+  };
+} // namespace PolyFrac
+
+#endif

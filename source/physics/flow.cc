@@ -1,0 +1,567 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <polyfrac/discretization/hybrid_finite_volume.h>
+#include <polyfrac/physics/flow.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    bool
+    listed(const std::vector<unsigned int> &ids, const types::boundary_id id)
+    {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Flow<dim>::Flow(const Parameters           &prm,
+                  const MeshGeometry<dim>    &geometry,
+                  const FractureNetwork<dim> &network,
+                  const FractureEdges<dim>   &edges,
+                  const PressureDoFMap<dim>  &dofs)
+    : prm(prm)
+    , geometry(geometry)
+    , network(network)
+    , edges(edges)
+    , dofs(dofs)
+    , matrix_source(make_expression<dim>("Flow/Matrix source",
+                                         prm.flow.matrix_source,
+                                         1,
+                                         prm.constants))
+    , fracture_source(make_expression<dim>("Flow/Fracture source",
+                                           prm.flow.fracture_source,
+                                           1,
+                                           prm.constants))
+    , boundary_pressure(
+        make_expression<dim>("Flow/Pressure boundary expression",
+                             prm.flow.pressure_expression,
+                             1,
+                             prm.constants))
+    , boundary_flux(make_expression<dim>("Flow/Flux boundary expression",
+                                         prm.flow.flux_expression,
+                                         1,
+                                         prm.constants))
+  {
+    const auto                  &mesh = geometry.mesh;
+    std::set<types::boundary_id> mesh_ids;
+    for (const auto &face : mesh.faces)
+      if (face.at_boundary())
+        mesh_ids.insert(face.boundary_id);
+    std::string ids;
+    for (const types::boundary_id id : mesh_ids)
+      ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+    for (const auto &[entry, list] :
+         {std::make_pair(std::string("Pressure boundary ids"),
+                         &prm.flow.pressure_ids),
+          std::make_pair(std::string("Flux boundary ids"), &prm.flow.flux_ids)})
+      for (const unsigned int id : *list)
+        AssertThrow(mesh_ids.count(id) == 1,
+                    ExcMessage("In <" + prm.file_name + ">: Flow/" + entry +
+                               " lists the id " + std::to_string(id) +
+                               ", which no boundary face of the mesh carries. "
+                               "The mesh has the boundary ids " +
+                               ids +
+                               " (generated boxes: 0/1 at x min/max, 2/3 at "
+                               "y, 4/5 at z)."));
+
+    const auto   permeability = make_expression<dim>("Flow/Permeability",
+                                                   prm.flow.permeability,
+                                                   1,
+                                                   prm.constants);
+    const double alpha =
+      prm.flow.stabilisation > 0 ? prm.flow.stabilisation : std::sqrt(dim);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const Point<dim> &x = geometry.cells[c].centroid;
+        const double      k = permeability->value(x);
+        if (k < 0)
+          {
+            std::ostringstream where;
+            where << x;
+            AssertThrow(false,
+                        ExcMessage(
+                          "In <" + prm.file_name + ">: Flow/Permeability is " +
+                          std::to_string(k) + " < 0 at the point " +
+                          where.str() + "; a permeability must be >= 0."));
+          }
+        cell_mobility.push_back(k / prm.flow.viscosity);
+        cell_matrices.push_back(cell_hfv_matrix(geometry, c, alpha));
+      }
+    const double fracture_alpha =
+      prm.flow.stabilisation > 0 ? prm.flow.stabilisation : std::sqrt(dim - 1.);
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      fracture_matrices.push_back(
+        fracture_hfv_matrix(geometry, network, edges, i, fracture_alpha));
+  }
+
+
+
+  template <int dim>
+  FlowStepData
+  Flow<dim>::flow_step_data(const double time, const double time_step) const
+  {
+    FlowStepData data;
+    data.time      = time;
+    data.time_step = time_step;
+    data.storage.assign(geometry.mesh.n_cells(), prm.flow.inverse_biot_modulus);
+    data.cell_rhs.assign(geometry.mesh.n_cells(), 0.);
+    data.fracture_storage.assign(network.n_fracture_faces(), 0.);
+    data.fracture_rhs.assign(network.n_fracture_faces(), 0.);
+    data.apertures.assign(network.n_fracture_faces(),
+                          prm.flow.aperture_at_contact);
+    return data;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Flow<dim>::initial_pressure() const
+  {
+    const auto     initial = make_expression<dim>("Flow/Initial pressure",
+                                              prm.flow.initial_pressure,
+                                              1,
+                                              prm.constants);
+    const auto    &mesh    = geometry.mesh;
+    Vector<double> p(dofs.n_dofs());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        p(dofs.cell_dof(c)) = initial->value(geometry.cells[c].centroid);
+        for (const unsigned int f : mesh.cells[c].faces)
+          p(dofs.face_dof(f, c)) = initial->value(geometry.faces[f].centroid);
+      }
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      p(dofs.fracture_face_dof(i)) =
+        initial->value(geometry.faces[network.fracture_faces[i].face].centroid);
+    for (unsigned int e = 0; e < edges.n_edges(); ++e)
+      p(dofs.edge_dof(e)) = initial->value(edges.edges[e].centroid);
+    return p;
+  }
+
+
+
+  template <int dim>
+  double
+  Flow<dim>::fracture_conductivity(const double aperture) const
+  {
+    const double d = std::max(aperture, prm.flow.minimum_aperture);
+    return d * d * d / (12 * prm.flow.viscosity);
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  Flow<dim>::cell_dofs(const unsigned int c) const
+  {
+    std::vector<types::global_dof_index> local = {dofs.cell_dof(c)};
+    for (const unsigned int f : geometry.mesh.cells[c].faces)
+      local.push_back(dofs.face_dof(f, c));
+    return local;
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  Flow<dim>::fracture_dofs(const unsigned int i) const
+  {
+    std::vector<types::global_dof_index> local = {dofs.fracture_face_dof(i)};
+    for (const auto &side : edges.face_edges[i])
+      local.push_back(dofs.edge_dof(side.edge));
+    return local;
+  }
+
+
+
+  template <int dim>
+  bool
+  Flow<dim>::active(const unsigned int c, const FlowStepData &data) const
+  {
+    return cell_mobility[c] > 0 || data.storage[c] > 0;
+  }
+
+
+
+  template <int dim>
+  void
+  Flow<dim>::assemble(const FlowStepData        &data,
+                      const Vector<double>      &previous,
+                      AffineConstraints<double> &constraints,
+                      SparsityPattern           &sparsity,
+                      SparseMatrix<double>      &matrix,
+                      Vector<double>            &rhs) const
+  {
+    const auto  &mesh = geometry.mesh;
+    const auto  &flow = prm.flow;
+    const double dt   = data.time_step;
+    AssertThrow(dt > 0, ExcMessage("Flow: the time step must be > 0."));
+    matrix_source->set_time(data.time);
+    fracture_source->set_time(data.time);
+    boundary_pressure->set_time(data.time);
+    boundary_flux->set_time(data.time);
+
+    // Prescribed pressures: Pressure boundary faces and fracture edges.
+    constraints.clear();
+    const auto prescribe = [&](const types::global_dof_index i,
+                               const double                  value) {
+      if (!constraints.is_constrained(i))
+        {
+          constraints.add_line(i);
+          constraints.set_inhomogeneity(i, value);
+        }
+    };
+    bool has_storage = false;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      has_storage |= data.storage[c] > 0;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      has_storage |= data.fracture_storage[i] > 0;
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.faces[f].at_boundary() &&
+          listed(flow.pressure_ids, mesh.faces[f].boundary_id))
+        prescribe(dofs.face_dof(f, mesh.faces[f].cells[0]),
+                  boundary_pressure->value(geometry.faces[f].centroid));
+    for (unsigned int e = 0; e < edges.n_edges(); ++e)
+      for (const types::boundary_id id : edges.edges[e].boundary_ids)
+        if (listed(flow.pressure_ids, id))
+          prescribe(dofs.edge_dof(e),
+                    boundary_pressure->value(edges.edges[e].centroid));
+    AssertThrow(!constraints.get_lines().empty() || has_storage,
+                ExcMessage("In <" + prm.file_name +
+                           ">: the flow problem has neither a prescribed "
+                           "pressure nor storage, so its pressure is known "
+                           "only up to a constant. Set Flow/Pressure "
+                           "boundary ids or Flow/Inverse Biot modulus > 0."));
+    // A cell without permeability and storage has no equation, and a face
+    // unknown seen by no permeable cell has none either: they keep their
+    // previous values (the matrix is not solved for).
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        if (!active(c, data))
+          prescribe(dofs.cell_dof(c), previous(dofs.cell_dof(c)));
+        if (cell_mobility[c] > 0)
+          continue;
+        for (const unsigned int f : mesh.cells[c].faces)
+          {
+            const auto        &cells = mesh.faces[f].cells;
+            const unsigned int other = cells[0] == c ? cells[1] : cells[0];
+            if (network.fracture_face_of(f) != PolytopalMesh<dim>::invalid ||
+                other == PolytopalMesh<dim>::invalid ||
+                cell_mobility[other] == 0)
+              prescribe(dofs.face_dof(f, c), previous(dofs.face_dof(f, c)));
+          }
+      }
+    constraints.close();
+
+    DynamicSparsityPattern pattern(dofs.n_dofs());
+    const auto couple = [&](const std::vector<types::global_dof_index> &local) {
+      for (const auto i : local)
+        for (const auto j : local)
+          pattern.add(i, j);
+    };
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      couple(cell_dofs(c));
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        couple(fracture_dofs(i));
+        const auto &ff = network.fracture_faces[i];
+        for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
+          couple({dofs.fracture_face_dof(i), dofs.face_dof(ff.face, cell)});
+      }
+    sparsity.copy_from(pattern);
+    matrix.reinit(sparsity);
+    rhs.reinit(dofs.n_dofs());
+
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        if (!active(c, data))
+          continue;
+        const auto        &cell   = mesh.cells[c];
+        const double       volume = geometry.cells[c].measure;
+        FullMatrix<double> local  = cell_matrices[c];
+        local *= cell_mobility[c];
+        Vector<double> local_rhs(local.m());
+        local(0, 0) += volume * data.storage[c] / dt;
+        local_rhs(0) =
+          volume * (matrix_source->value(geometry.cells[c].centroid) +
+                    data.cell_rhs[c]) +
+          volume * data.storage[c] / dt * previous(dofs.cell_dof(c));
+        for (unsigned int j = 0; j < cell.faces.size(); ++j)
+          {
+            const auto &face = mesh.faces[cell.faces[j]];
+            if (face.at_boundary() && listed(flow.flux_ids, face.boundary_id))
+              local_rhs(j + 1) =
+                -geometry.faces[cell.faces[j]].measure *
+                boundary_flux->value(geometry.faces[cell.faces[j]].centroid);
+          }
+        constraints.distribute_local_to_global(
+          local, local_rhs, cell_dofs(c), matrix, rhs);
+      }
+
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto        &ff    = network.fracture_faces[i];
+        const auto        &face  = geometry.faces[ff.face];
+        FullMatrix<double> local = fracture_matrices[i];
+        local *= fracture_conductivity(data.apertures[i]);
+        Vector<double> local_rhs(local.m());
+        local(0, 0) += face.measure * data.fracture_storage[i] / dt;
+        local_rhs(0) = face.measure * (fracture_source->value(face.centroid) +
+                                       data.fracture_rhs[i]) +
+                       face.measure * data.fracture_storage[i] / dt *
+                         previous(dofs.fracture_face_dof(i));
+        constraints.distribute_local_to_global(
+          local, local_rhs, fracture_dofs(i), matrix, rhs);
+
+        // Exchange T_σ (p_{Kσ} − p_{f,σ}) with each permeable side.
+        const double       T = face.measure * flow.normal_transmissibility;
+        FullMatrix<double> exchange(2, 2);
+        exchange(0, 0) = exchange(1, 1) = T;
+        exchange(0, 1) = exchange(1, 0) = -T;
+        for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
+          if (cell_mobility[cell] > 0)
+            constraints.distribute_local_to_global(
+              exchange,
+              std::vector<types::global_dof_index>{dofs.face_dof(ff.face, cell),
+                                                   dofs.fracture_face_dof(i)},
+              matrix);
+      }
+
+    // Prescribed unknowns that no assembled equation touches (those of
+    // cells not solved for) get a unit diagonal, so that the matrix stays
+    // regular; distribute() sets their values.
+    for (const auto &line : constraints.get_lines())
+      if (matrix.diag_element(line.index) == 0)
+        {
+          matrix.set(line.index, line.index, 1.);
+          rhs(line.index) = line.inhomogeneity;
+        }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Flow<dim>::solve_step(const FlowStepData   &data,
+                        const Vector<double> &previous,
+                        Vector<double>       &pressure) const
+  {
+    AffineConstraints<double> constraints;
+    SparsityPattern           sparsity;
+    SparseMatrix<double>      matrix;
+    Vector<double>            rhs;
+    assemble(data, previous, constraints, sparsity, matrix, rhs);
+    pressure.reinit(dofs.n_dofs());
+    unsigned int iterations = 0;
+    if (prm.solver.method == "direct")
+      {
+        SparseDirectUMFPACK direct;
+        direct.initialize(matrix);
+        direct.vmult(pressure, rhs);
+      }
+    else
+      {
+        TrilinosWrappers::SparseMatrix trilinos_matrix;
+        trilinos_matrix.reinit(matrix);
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+        amg_data.elliptic = true;
+        amg.initialize(trilinos_matrix, amg_data);
+        SolverControl            control(prm.solver.max_iterations,
+                              prm.solver.tolerance * rhs.l2_norm());
+        SolverCG<Vector<double>> cg(control);
+        try
+          {
+            cg.solve(trilinos_matrix, pressure, rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            AssertThrow(false,
+                        ExcMessage("Flow: CG + AMG did not reach Linear "
+                                   "solver/Tolerance in " +
+                                   std::to_string(control.last_step()) +
+                                   " iterations; raise Maximum iterations "
+                                   "or use Method = direct."));
+          }
+        iterations = control.last_step();
+      }
+    constraints.distribute(pressure);
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::cell_fluxes(const unsigned int    c,
+                         const Vector<double> &pressure) const
+  {
+    const auto                local_dofs = cell_dofs(c);
+    const FullMatrix<double> &A          = cell_matrices[c];
+    std::vector<double>       fluxes(local_dofs.size() - 1, 0.);
+    for (unsigned int i = 1; i < local_dofs.size(); ++i)
+      for (unsigned int j = 0; j < local_dofs.size(); ++j)
+        fluxes[i - 1] -= cell_mobility[c] * A(i, j) * pressure(local_dofs[j]);
+    return fluxes;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::fracture_fluxes(const unsigned int         i,
+                             const std::vector<double> &apertures,
+                             const Vector<double>      &pressure) const
+  {
+    const auto                local_dofs = fracture_dofs(i);
+    const FullMatrix<double> &B          = fracture_matrices[i];
+    const double        conductivity     = fracture_conductivity(apertures[i]);
+    std::vector<double> fluxes(local_dofs.size() - 1, 0.);
+    for (unsigned int a = 1; a < local_dofs.size(); ++a)
+      for (unsigned int b = 0; b < local_dofs.size(); ++b)
+        fluxes[a - 1] -= conductivity * B(a, b) * pressure(local_dofs[b]);
+    return fluxes;
+  }
+
+
+
+  template <int dim>
+  double
+  Flow<dim>::mass_balance_residual(const FlowStepData   &data,
+                                   const Vector<double> &previous,
+                                   const Vector<double> &pressure) const
+  {
+    const auto &mesh = geometry.mesh;
+    matrix_source->set_time(data.time);
+    fracture_source->set_time(data.time);
+    // The residual of one balance relative to its largest term.
+    const auto relative = [](const std::vector<double> &terms) {
+      double sum = 0, largest = 0;
+      for (const double t : terms)
+        {
+          sum += t;
+          largest = std::max(largest, std::abs(t));
+        }
+      return largest > 0 ? std::abs(sum) / largest : 0.;
+    };
+    double residual = 0;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      if (active(c, data))
+        {
+          const double        volume = geometry.cells[c].measure;
+          std::vector<double> terms  = cell_fluxes(c, pressure);
+          terms.push_back(
+            volume * data.storage[c] / data.time_step *
+            (pressure(dofs.cell_dof(c)) - previous(dofs.cell_dof(c))));
+          terms.push_back(-volume *
+                          (matrix_source->value(geometry.cells[c].centroid) +
+                           data.cell_rhs[c]));
+          residual = std::max(residual, relative(terms));
+        }
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto         &ff   = network.fracture_faces[i];
+        const auto         &face = geometry.faces[ff.face];
+        std::vector<double> terms =
+          fracture_fluxes(i, data.apertures, pressure);
+        const double p_f = pressure(dofs.fracture_face_dof(i));
+        terms.push_back(face.measure * data.fracture_storage[i] /
+                        data.time_step *
+                        (p_f - previous(dofs.fracture_face_dof(i))));
+        for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
+          if (cell_mobility[cell] > 0)
+            terms.push_back(face.measure * prm.flow.normal_transmissibility *
+                            (p_f - pressure(dofs.face_dof(ff.face, cell))));
+        terms.push_back(-face.measure * (fracture_source->value(face.centroid) +
+                                         data.fracture_rhs[i]));
+        residual = std::max(residual, relative(terms));
+      }
+    return residual;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::cell_pressures(const Vector<double> &pressure) const
+  {
+    std::vector<double> p(geometry.mesh.n_cells());
+    for (unsigned int c = 0; c < p.size(); ++c)
+      p[c] = pressure(dofs.cell_dof(c));
+    return p;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::fracture_pressures(const Vector<double> &pressure) const
+  {
+    std::vector<double> p(network.n_fracture_faces());
+    for (unsigned int i = 0; i < p.size(); ++i)
+      p[i] = pressure(dofs.fracture_face_dof(i));
+    return p;
+  }
+
+
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  Flow<dim>::darcy_velocities(const Vector<double> &pressure) const
+  {
+    const auto                 &mesh = geometry.mesh;
+    std::vector<Tensor<1, dim>> velocities(mesh.n_cells());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const std::vector<double> fluxes = cell_fluxes(c, pressure);
+        for (unsigned int j = 0; j < fluxes.size(); ++j)
+          velocities[c] += fluxes[j] *
+                           (geometry.faces[mesh.cells[c].faces[j]].centroid -
+                            geometry.cells[c].centroid) /
+                           geometry.cells[c].measure;
+      }
+    return velocities;
+  }
+
+
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  Flow<dim>::fracture_velocities(const std::vector<double> &apertures,
+                                 const Vector<double>      &pressure) const
+  {
+    std::vector<Tensor<1, dim>> velocities(network.n_fracture_faces());
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto &face = geometry.faces[network.fracture_faces[i].face];
+        const std::vector<double> fluxes =
+          fracture_fluxes(i, apertures, pressure);
+        for (unsigned int j = 0; j < fluxes.size(); ++j)
+          velocities[i] += fluxes[j] *
+                           (edges.edges[edges.face_edges[i][j].edge].centroid -
+                            face.centroid) /
+                           face.measure;
+      }
+    return velocities;
+  }
+
+
+
+  template class Flow<2>;
+  template class Flow<3>;
+} // namespace PolyFrac
