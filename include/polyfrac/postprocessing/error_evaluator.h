@@ -2,8 +2,7 @@
 #define polyfrac_postprocessing_error_evaluator_h
 
 #include <polyfrac/base/parameters.h>
-#include <polyfrac/contact/contact_mechanics.h>
-#include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/mechanical_state.h>
 
 #include <optional>
 #include <string>
@@ -59,15 +58,15 @@ namespace PolyFrac
   const std::vector<ErrorColumn> &
   error_columns();
 
-  /** The Errors of the solution in @p elasticity against the exact fields
-   * of @p prm. */
+  /** The Errors of the mechanical @p state against the exact fields of
+   * @p prm. */
   template <int dim>
   Errors
   compute_errors(const Parameters           &prm,
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
-                 const Elasticity<dim>      &elasticity);
+                 const MechanicalState<dim> &state);
 
   /**
    * The largest opening −[[u_D]]_σ·n^+ over the fracture faces in state
@@ -88,11 +87,11 @@ namespace PolyFrac
   /** The MaximumOpening, or nothing when no face is open. */
   template <int dim>
   std::optional<MaximumOpening>
-  maximum_opening(const Parameters               &prm,
-                  const MeshGeometry<dim>        &geometry,
-                  const FractureNetwork<dim>     &network,
-                  const Elasticity<dim>          &elasticity,
-                  const std::vector<NormalState> &states);
+  maximum_opening(const Parameters           &prm,
+                  const MeshGeometry<dim>    &geometry,
+                  const FractureNetwork<dim> &network,
+                  const DoFMap<dim>          &dofs,
+                  const MechanicalState<dim> &state);
 } // namespace PolyFrac
 
 #endif
