@@ -319,15 +319,15 @@ namespace Step2
   // The class that walks the fracture faces after ContactMechanics::solve()
   // and recomputes what the introduction describes. It only reads the
   // solution: the jump [[u_D]]_σ and the multiplier λ_σ, both in global
-  // components, from the Elasticity object that ContactMechanics fills in
-  // (Elasticity::jump_value() and Elasticity::fracture_traction()).
+  // components, from the MechanicalState that ContactMechanics::solve()
+  // fills in (MechanicalState::jump_value() and ::multipliers).
   template <int dim>
   class ActiveSetCheck
   {
   public:
     ActiveSetCheck(const Parameters               &prm,
                    const LevelDiscretization<dim> &level,
-                   const ContactMechanics<dim>    &contact);
+                   const MechanicalState<dim>     &state);
 
     // The conditions on face i, with β_σ multiplied by @p beta_factor.
     FaceConditions<dim>
@@ -346,10 +346,11 @@ namespace Step2
                                std::ostream      &out) const;
 
   private:
-    const Parameters            &prm;
-    const MeshGeometry<dim>     &geometry;
-    const FractureNetwork<dim>  &network;
-    const ContactMechanics<dim> &contact;
+    const Parameters           &prm;
+    const MeshGeometry<dim>    &geometry;
+    const FractureNetwork<dim> &network;
+    const DoFMap<dim>          &dofs;
+    const MechanicalState<dim> &state;
 
     std::unique_ptr<FunctionParser<dim>> tresca_threshold;
   };
@@ -363,11 +364,12 @@ namespace Step2
   template <int dim>
   ActiveSetCheck<dim>::ActiveSetCheck(const Parameters               &prm,
                                       const LevelDiscretization<dim> &level,
-                                      const ContactMechanics<dim>    &contact)
+                                      const MechanicalState<dim>     &state)
     : prm(prm)
     , geometry(*level.geometry)
     , network(*level.network)
-    , contact(contact)
+    , dofs(*level.dofs)
+    , state(state)
     , tresca_threshold(make_expression<dim>("Contact/Tresca threshold",
                                             prm.contact.tresca_threshold,
                                             1,
@@ -400,13 +402,12 @@ namespace Step2
   {
     const FaceGeometry<dim> &face =
       geometry.faces[network.fracture_faces[i].face];
-    const Tensor<2, dim>   Q   = network.frame(i);
-    const Elasticity<dim> &u   = contact.displacement();
-    const std::string     &law = prm.contact.friction_law;
+    const Tensor<2, dim> Q   = network.frame(i);
+    const std::string   &law = prm.contact.friction_law;
 
     FaceConditions<dim> c;
-    c.lambda = Q * u.fracture_traction(i);
-    c.jump   = Q * u.jump_value(i);
+    c.lambda = Q * state.multipliers[i];
+    c.jump   = Q * state.jump_value(geometry, dofs, network, i);
     c.beta =
       beta_factor * (prm.contact.beta > 0 ?
                        prm.contact.beta :
@@ -496,8 +497,8 @@ namespace Step2
         n_slip += c.tangential == TangentialState::slip;
         n_free += c.tangential == TangentialState::free;
         n_disagree +=
-          c.normal != contact.normal_state[i] ||
-          (compare_tangential && c.tangential != contact.tangential_state[i]);
+          c.normal != state.contact.normal[i] ||
+          (compare_tangential && c.tangential != state.contact.tangential[i]);
       }
     out << "  States from b_n, b_t: open " << n_open << ", contact "
         << n_contact << "; stick " << n_stick << ", slip " << n_slip;
@@ -788,11 +789,12 @@ namespace Step2
         ContactMechanics<dim> contact(prm, geometry, network, dofs);
         out << ", " << contact.n_unknowns() << " unknowns (u and lambda)"
             << std::endl;
-        std::ostringstream log;
-        contact.solve(log);
+        std::ostringstream   log;
+        MechanicalState<dim> state;
+        contact.solve(state, log);
         print_newton_log(log.str(), out);
 
-        const ActiveSetCheck<dim> check(prm, discretization, contact);
+        const ActiveSetCheck<dim> check(prm, discretization, state);
         check.report(out);
         if (level + 1 == prm.n_refinement_levels)
           {
@@ -803,14 +805,13 @@ namespace Step2
           }
         out << std::endl;
 
-        rows.push_back(
-          {level,
-           geometry.max_diameter(),
-           geometry.mesh.n_cells(),
-           static_cast<unsigned int>(contact.n_unknowns()),
-           compute_errors(prm, geometry, network, dofs, contact.displacement()),
-           {},
-           0.});
+        rows.push_back({level,
+                        geometry.max_diameter(),
+                        geometry.mesh.n_cells(),
+                        static_cast<unsigned int>(contact.n_unknowns()),
+                        compute_errors(prm, geometry, network, dofs, state),
+                        {},
+                        0.});
       }
 
     // The table: the largest polytope diameter h, the errors with six

@@ -1,159 +1,184 @@
+#include <deal.II/base/discrete_time.h>
 #include <deal.II/base/timer.h>
 
+#include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/base/memory_estimate.h>
-#include <polyfrac/contact/contact_mechanics.h>
-#include <polyfrac/io/vtu_writer.h>
-#include <polyfrac/mesh/gmsh_reader.h>
-#include <polyfrac/physics/elasticity.h>
 #include <polyfrac/postprocessing/verification.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <map>
 
 namespace PolyFrac
 {
+  /**
+   * The output files of one level: the matrix and fracture VTU series over
+   * its steps (`solution-level-K`, `fractures-level-K`) and, for a
+   * time-dependent model, `time_series-level-K.csv`, one row per step.
+   */
+  template <int dim>
+  class Simulator<dim>::LevelOutput
+  {
+  public:
+    /** The files of @p level of the scene of @p prm; @p with_fractures: the
+     * mesh has fracture faces; @p time_series: the model is time-dependent. */
+    LevelOutput(const Parameters  &prm,
+                const unsigned int level,
+                const bool         with_fractures,
+                const bool         time_series);
+
+    /** Writes the state of @p model at time @p t as the next VTU step (if
+     * Output/Write VTU). */
+    void
+    write_state(const Model<dim> &model, const double t);
+
+    /** Appends the row of step @p step to `time_series-level-K.csv`. */
+    void
+    write_time_series_row(const unsigned int step,
+                          const double       t,
+                          const double       time_step,
+                          const StepReport  &report,
+                          const Errors      &errors,
+                          const double       wall_seconds);
+
+    /** The files written, in order. */
+    std::vector<std::string>
+    file_names() const;
+
+  private:
+    const Parameters            &prm;
+    std::optional<VtuSeries>     solution, fractures;
+    std::string                  time_series_name;
+    std::optional<std::ofstream> time_series;
+  };
+
+
+
   namespace
   {
-    template <int dim>
-    std::vector<Fracture<dim>>
-    fractures_from(const Parameters &prm)
+    DataOutBase::VtkFlags::ZlibCompressionLevel
+    compression_level(const std::string &name)
     {
-      std::vector<Fracture<dim>> fractures;
-      for (const auto &points3 : prm.fractures.geometries)
-        {
-          std::vector<Point<dim>> points;
-          for (const Point<3> &p : points3)
-            {
-              Point<dim> q;
-              for (unsigned int d = 0; d < dim; ++d)
-                q[d] = p[d];
-              points.push_back(q);
-            }
-          fractures.emplace_back(points);
-        }
-      return fractures;
+      return name == "best" ? DataOutBase::VtkFlags::best_compression :
+             name == "fast" ? DataOutBase::VtkFlags::best_speed :
+                              DataOutBase::VtkFlags::no_compression;
     }
 
-    /**
-     * The faces of @p mesh that the fracture elements of @p gmsh_mesh are,
-     * matched by their sorted vertex sets (the vertex indices of the
-     * triangulation are kept by the polytopal mesh, its distortion and its
-     * agglomeration), each with its fracture and n^+.
-     */
-    template <int dim>
-    std::vector<typename FractureNetwork<dim>::TaggedFace>
-    tagged_faces(const GmshMesh<dim> &gmsh_mesh, const PolytopalMesh<dim> &mesh)
+    /** Writes @p value to @p out if it is given (an empty csv cell if not). */
+    template <typename T>
+    void
+    write_cell(std::ostream &out, const std::optional<T> &value)
     {
-      std::map<std::vector<unsigned int>, unsigned int> face_of_vertices;
-      for (unsigned int f = 0; f < mesh.n_faces(); ++f)
-        {
-          std::vector<unsigned int> key = mesh.faces[f].vertices;
-          std::sort(key.begin(), key.end());
-          face_of_vertices.emplace(key, f);
-        }
-      std::vector<typename FractureNetwork<dim>::TaggedFace> faces;
-      for (const auto &element : gmsh_mesh.fracture_elements)
-        {
-          std::vector<unsigned int> key = element.vertices;
-          std::sort(key.begin(), key.end());
-          const auto it = face_of_vertices.find(key);
-          AssertThrow(it != face_of_vertices.end(),
-                      ExcMessage(
-                        "An element of the fracture " +
-                        gmsh_mesh.fracture_names[element.fracture] +
-                        " is not a face of the mesh: embed the fracture "
-                        "in the gmsh geometry (Curve{..} In Surface{..}; or "
-                        "Surface{..} In Volume{..};)."));
-          faces.push_back({it->second, element.fracture, element.normal});
-        }
-      return faces;
+      out << ',';
+      if (value)
+        out << *value;
     }
   } // namespace
 
 
 
   template <int dim>
-  LevelDiscretization<dim>::LevelDiscretization(const Parameters  &prm,
-                                                const unsigned int level)
+  Simulator<dim>::LevelOutput::LevelOutput(const Parameters  &prm,
+                                           const unsigned int level,
+                                           const bool         with_fractures,
+                                           const bool         time_series)
+    : prm(prm)
   {
-    // The fractures are either planar Fracture objects located
-    // geometrically (generated box) or the tagged elements of a gmsh mesh.
-    const bool                       from_gmsh = prm.mesh.source == "gmsh";
-    const std::vector<Fracture<dim>> fractures = fractures_from<dim>(prm);
-    GmshMesh<dim>                    gmsh_mesh;
-    if (from_gmsh)
+    const std::string level_name = "-level-" + std::to_string(level);
+    const auto compression = compression_level(prm.output.vtu_compression);
+    if (prm.output.write_vtu)
       {
-        AssertThrow(fractures.empty(),
-                    ExcMessage(
-                      (prm.file_name.empty() ? std::string() :
-                                               "In <" + prm.file_name + ">: ") +
-                      "Fractures/" + (dim == 2 ? "Segments" : "Polygons") +
-                      " cannot be combined with Mesh/Source = gmsh: "
-                      "give the fractures as physical groups of the "
-                      "mesh and list them in Fractures/Gmsh physical "
-                      "tags."));
-        gmsh_mesh =
-          read_gmsh(prm, prm.mesh.global_refinements + level, triangulation);
+        solution.emplace(prm.output.directory,
+                         "solution" + level_name,
+                         compression);
+        if (with_fractures)
+          fractures.emplace(prm.output.directory,
+                            "fractures" + level_name,
+                            compression);
       }
-    else
+    if (time_series)
       {
-        MeshBuilder::make_box(prm, level, triangulation);
-        MeshBuilder::refine_in_box(prm, triangulation);
+        time_series_name = "time_series" + level_name + ".csv";
+        this->time_series.emplace(prm.output.directory + "/" +
+                                  time_series_name);
+        AssertThrow(*this->time_series,
+                    ExcMessage("Cannot write <" + prm.output.directory + "/" +
+                               time_series_name + ">."));
+        *this->time_series
+          << "step,time,time_step,coupling_iterations,newton_iterations,"
+             "n_open,n_stick,n_slip,mean_aperture,mean_fracture_pressure,"
+             "err_pressure,err_fracture_pressure,err_u,energy_residual,"
+             "wall_seconds"
+          << std::endl;
       }
-    mesh = std::make_unique<PolytopalMesh<dim>>(
-      PolytopalMesh<dim>::from_triangulation(triangulation));
-
-    // gmsh fractures are not planar Fracture objects: their vertices stay.
-    std::vector<bool> fixed_vertices(mesh->vertices.size(), false);
-    for (const auto &element : gmsh_mesh.fracture_elements)
-      for (const unsigned int v : element.vertices)
-        fixed_vertices[v] = true;
-    MeshBuilder::distort(prm, fractures, fixed_vertices, *mesh);
-
-    const auto make_network = [&](const MeshGeometry<dim> &mesh_geometry) {
-      return from_gmsh ?
-               std::make_unique<FractureNetwork<dim>>(
-                 gmsh_mesh.fracture_names,
-                 tagged_faces(gmsh_mesh, mesh_geometry.mesh),
-                 mesh_geometry) :
-               std::make_unique<FractureNetwork<dim>>(fractures, mesh_geometry);
-    };
-
-    if (prm.mesh.cells_per_polytope > 1)
-      {
-        const MeshGeometry<dim> fine_geometry(*mesh);
-        const auto              fine_network = make_network(fine_geometry);
-        std::vector<bool>       fracture_face(mesh->n_faces(), false);
-        for (const auto &ff : fine_network->fracture_faces)
-          fracture_face[ff.face] = true;
-        mesh = std::make_unique<PolytopalMesh<dim>>(
-          MeshBuilder::agglomerate(prm, fracture_face, *mesh));
-      }
-
-    geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
-    network  = make_network(*geometry);
-    dofs     = std::make_unique<DoFMap<dim>>(*mesh, *network);
   }
 
 
 
   template <int dim>
   void
-  LevelDiscretization<dim>::print_summary(std::ostream &out) const
+  Simulator<dim>::LevelOutput::write_state(const Model<dim> &model,
+                                           const double      t)
   {
-    geometry->print_quality(out);
-    network->print(out);
-    out << "Node sides: " << dofs->n_node_sides() << " (vertices with";
-    const std::vector<unsigned int> histogram = dofs->node_side_histogram();
-    for (unsigned int k = 1; k < histogram.size(); ++k)
-      if (histogram[k] > 0)
-        out << ' ' << k << " side" << (k > 1 ? "s: " : ": ") << histogram[k];
-    out << "); bubbles: " << dofs->n_bubbles() << std::endl;
+    if (solution)
+      solution->write(model.matrix_output(), t);
+    if (fractures)
+      fractures->write(model.fracture_output(), t);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::LevelOutput::write_time_series_row(const unsigned int step,
+                                                     const double       t,
+                                                     const double time_step,
+                                                     const StepReport &report,
+                                                     const Errors     &errors,
+                                                     const double wall_seconds)
+  {
+    // The error columns of the time series, looked up by name among the
+    // columns of convergence.csv (empty where the exact field is not given).
+    const auto error = [&errors](const std::string &name) {
+      std::optional<double> value;
+      for (const auto &[column, member] : error_columns())
+        if (column == name && errors.*member)
+          value = (errors.*member)->value;
+      return value;
+    };
+    std::ostream &out = *time_series;
+    out << step << ',' << std::setprecision(12) << t << ',' << time_step
+        << std::setprecision(6);
+    write_cell(out, report.coupling_iterations);
+    write_cell(out, report.newton_iterations);
+    write_cell(out, report.n_open);
+    write_cell(out, report.n_stick);
+    write_cell(out, report.n_slip);
+    write_cell(out, report.mean_aperture);
+    write_cell(out, report.mean_fracture_pressure);
+    write_cell(out, error("err_pressure"));
+    write_cell(out, error("err_fracture_pressure"));
+    write_cell(out, error("err_u"));
+    write_cell(out, report.energy_residual);
+    out << ',' << wall_seconds << std::endl;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  Simulator<dim>::LevelOutput::file_names() const
+  {
+    std::vector<std::string> names;
+    for (const auto *series : {&solution, &fractures})
+      if (*series)
+        for (const std::string &name : (*series)->file_names())
+          names.push_back(name);
+    if (time_series)
+      names.push_back(time_series_name);
+    return names;
   }
 
 
@@ -232,141 +257,131 @@ namespace PolyFrac
     timer.enter_subsection("mesh");
     const LevelDiscretization<dim> discretization(prm, level);
     timer.leave_subsection();
-    const auto &geometry = *discretization.geometry;
-    const auto &network  = *discretization.network;
-    const auto &dofs     = *discretization.dofs;
 
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
-    MeshBuilder::check_weights(prm, geometry);
+    MeshBuilder::check_weights(prm, *discretization.geometry);
 
-    std::unique_ptr<Elasticity<dim>>       elasticity;
-    std::unique_ptr<ContactMechanics<dim>> contact;
-    std::optional<unsigned int>            newton_iterations;
-    types::global_dof_index                n_unknowns;
-    if (prm.model == "contact mechanics")
-      {
-        // The constructor assembles the elasticity operator.
-        timer.enter_subsection("assembly");
-        contact =
-          std::make_unique<ContactMechanics<dim>>(prm, geometry, network, dofs);
-        timer.leave_subsection();
-        timer.enter_subsection("solve");
-        if (previous_multipliers &&
-            prm.nonlinear.initial_guess == "previous level")
-          contact->start_from(*previous_multipliers);
-        contact->solve(out);
-        timer.leave_subsection();
-        previous_multipliers = contact->multiplier_field();
-        newton_iterations    = contact->n_newton_iterations();
-        n_unknowns           = contact->n_unknowns();
-        out << "Newton iterations: " << *newton_iterations << std::endl;
-        timer.enter_subsection("postprocessing");
-        if (const auto opening = maximum_opening(prm,
-                                                 geometry,
-                                                 network,
-                                                 contact->displacement(),
-                                                 contact->normal_state))
-          {
-            const Point<dim> &x =
-              geometry.faces[network.fracture_faces[opening->face].face]
-                .centroid;
-            out << "Maximum opening: " << std::setprecision(5) << opening->value
-                << " at (" << x << ")";
-            if (opening->exact)
-              out << ", exact there " << *opening->exact;
-            if (opening->exact && *opening->exact > 0)
-              out << " (ratio " << std::setprecision(4)
-                  << opening->value / *opening->exact << ")";
-            out << std::defaultfloat << std::setprecision(6) << std::endl;
-          }
-        timer.leave_subsection();
-      }
-    else
-      {
-        timer.enter_subsection("assembly");
-        elasticity =
-          std::make_unique<Elasticity<dim>>(prm, geometry, network, dofs);
-        elasticity->assemble();
-        timer.leave_subsection();
-        timer.enter_subsection("solve");
-        const unsigned int iterations = elasticity->solve();
-        timer.leave_subsection();
-        n_unknowns = elasticity->n_unknowns();
-        if (prm.solver.method == "AMG")
-          out << "CG iterations: " << iterations << std::endl;
-      }
-    const Elasticity<dim> &mechanics =
-      contact ? contact->displacement() : *elasticity;
-    const double wall_seconds = wall.wall_time();
+    timer.enter_subsection("assembly");
+    const std::unique_ptr<Model<dim>> model = make_model(prm, discretization);
+    timer.leave_subsection();
+    if (coarser)
+      model->start_from(*coarser);
+
+    LevelOutput                       output(prm,
+                       level,
+                       discretization.network->n_fracture_faces() > 0,
+                       model->is_time_dependent());
+    const std::optional<unsigned int> newton_iterations =
+      run_steps(level, *model, output, timer, out);
+    coarser = model->level_start();
 
     timer.enter_subsection("postprocessing");
+    const double end_time = model->is_time_dependent() ? prm.time.end_time : 0;
     ConvergenceRow row{level,
-                       geometry.max_diameter(),
-                       geometry.mesh.n_cells(),
-                       static_cast<unsigned int>(n_unknowns),
-                       compute_errors(prm, geometry, network, dofs, mechanics),
+                       discretization.geometry->max_diameter(),
+                       discretization.mesh->n_cells(),
+                       static_cast<unsigned int>(model->n_unknowns()),
+                       model->errors(end_time),
                        newton_iterations,
-                       wall_seconds};
+                       wall.wall_time()};
     timer.leave_subsection();
-
-    if (prm.output.write_vtu)
+    // A static model's one state is written once its errors are known (an
+    // exact field that is not finite stops the run before any file).
+    if (!model->is_time_dependent())
       {
         TimerOutput::Scope section(timer, "output");
-        write_vtu(level, discretization, mechanics, contact.get());
+        output.write_state(*model, 0);
       }
+    for (const std::string &name : output.file_names())
+      written_files.push_back(name);
     return row;
   }
 
 
 
   template <int dim>
-  void
-  Simulator<dim>::write_vtu(const unsigned int                 level,
-                            const LevelDiscretization<dim>    &discretization,
-                            const Elasticity<dim>             &mechanics,
-                            const ContactMechanics<dim> *const contact)
+  std::optional<unsigned int>
+  Simulator<dim>::run_steps(const unsigned int level,
+                            Model<dim>        &model,
+                            LevelOutput       &output,
+                            TimerOutput       &timer,
+                            std::ostream      &out)
   {
-    const auto        compression = prm.output.vtu_compression == "best" ?
-                                      DataOutBase::VtkFlags::best_compression :
-                                      (prm.output.vtu_compression == "fast" ?
-                                         DataOutBase::VtkFlags::best_speed :
-                                         DataOutBase::VtkFlags::no_compression);
-    const std::string level_name  = "-level-" + std::to_string(level);
-    const auto       &geometry    = *discretization.geometry;
-    const auto       &network     = *discretization.network;
+    const auto output_state = [&](const double t) {
+      TimerOutput::Scope section(timer, "output");
+      output.write_state(model, t);
+    };
 
-    VtuSeries solution(prm.output.directory,
-                       "solution" + level_name,
-                       compression);
-    solution.write(
-      matrix_patches(geometry, network, *discretization.dofs, mechanics), 0.);
-    for (const std::string &name : solution.file_names())
-      written_files.push_back(name);
-
-    if (network.n_fracture_faces() > 0)
+    if (!model.is_time_dependent())
       {
-        VtuSeries fractures(prm.output.directory,
-                            "fractures" + level_name,
-                            compression);
-        fractures.write(fracture_patches(geometry,
-                                         network,
-                                         mechanics,
-                                         contact ? contact->normal_state :
-                                                   std::vector<NormalState>(),
-                                         contact ?
-                                           contact->tangential_state :
-                                           std::vector<TangentialState>()),
-                        0.);
-        for (const std::string &name : fractures.file_names())
-          written_files.push_back(name);
+        timer.enter_subsection("solve");
+        const StepReport report = model.step(0, 0, out);
+        timer.leave_subsection();
+        AssertThrow(report.converged, ExcMessage(report.failure));
+        TimerOutput::Scope section(timer, "postprocessing");
+        model.print_step_summary(out);
+        return report.newton_iterations;
       }
+
+    // Implicit Euler from t = 0: the initial state is step 0 of the
+    // series; a failed step is halved and retried.
+    const double time_step =
+      prm.time.time_step /
+      (prm.time.refine_with_mesh ? std::pow(2., level) : 1.);
+    DiscreteTime time(0, prm.time.end_time, time_step);
+    output_state(0);
+    std::optional<unsigned int> newton_iterations;
+    unsigned int                n_cuts = 0;
+    while (!time.is_at_end())
+      {
+        Timer        wall;
+        const double t_old = time.get_current_time();
+        const double t_new = time.get_next_time();
+        StepReport   report;
+        {
+          TimerOutput::Scope section(timer, "solve");
+          report = model.step(t_old, t_new, out);
+        }
+        if (!report.converged)
+          {
+            ++n_cuts;
+            AssertThrow(n_cuts <= 10,
+                        ExcMessage(
+                          "The step from t = " + std::to_string(t_old) +
+                          " did not converge after halving the time step " +
+                          "10 times (last try to t = " + std::to_string(t_new) +
+                          "): " + report.failure +
+                          " The last converged state (t = " +
+                          std::to_string(t_old) + ") is in the output files."));
+            out << "Step to t = " << t_new << " failed (" << report.failure
+                << "): halving the time step" << std::endl;
+            time.set_desired_next_step_size(time.get_next_step_size() / 2);
+            continue;
+          }
+        n_cuts = 0;
+        time.advance_time();
+        if (report.newton_iterations)
+          newton_iterations =
+            newton_iterations.value_or(0) + *report.newton_iterations;
+        {
+          TimerOutput::Scope section(timer, "postprocessing");
+          model.print_step_summary(out);
+          output.write_time_series_row(time.get_step_number(),
+                                       t_new,
+                                       t_new - t_old,
+                                       report,
+                                       model.errors(t_new),
+                                       wall.wall_time());
+        }
+        output_state(t_new);
+        time.set_desired_next_step_size(time_step);
+      }
+    return newton_iterations;
   }
 
 
 
-  template class LevelDiscretization<2>;
-  template class LevelDiscretization<3>;
   template class Simulator<2>;
   template class Simulator<3>;
 } // namespace PolyFrac

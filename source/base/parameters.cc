@@ -304,7 +304,7 @@ namespace PolyFrac
     prm.declare_entry(
       "Model",
       "elasticity",
-      Patterns::Selection("elasticity|contact mechanics|poromechanics"),
+      Patterns::Selection("elasticity|contact mechanics|flow|poromechanics"),
       "Physics of the scene. elasticity: linear elasticity with "
       "a prescribed load on the fractures (pressure and "
       "traction).");
@@ -479,7 +479,8 @@ namespace PolyFrac
                       "Level k: base mesh refined k more times globally, then "
                       "local refinement, distortion and agglomeration.");
     const std::string columns =
-      "err_u|err_grad_u|err_jump|err_lambda_hm12|err_lambda_l2";
+      "err_u|err_grad_u|err_jump|err_lambda_hm12|err_lambda_l2|err_pressure|"
+      "err_fracture_pressure";
     prm.declare_entry(
       "Maximum errors",
       "",
@@ -688,6 +689,26 @@ namespace PolyFrac
                       "assembly, solve, postprocessing, output) at the end "
                       "(tests switch this off; convergence.csv always has "
                       "the wall time of each level).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time");
+    prm.declare_entry("End time",
+                      "1",
+                      Patterns::Double(0),
+                      "Time-dependent models (flow, poromechanics) run "
+                      "implicit Euler steps from t = 0 to this time, in "
+                      "seconds; static models take one step.");
+    prm.declare_entry("Time step",
+                      "0.1",
+                      Patterns::Double(0),
+                      "The time step Δt (the last step is shortened to "
+                      "end at End time; a step whose solve fails is halved "
+                      "and retried).");
+    prm.declare_entry("Refine time step with mesh",
+                      "false",
+                      Patterns::Bool(),
+                      "true: each refinement level halves the time step "
+                      "(space-time convergence studies).");
     prm.leave_subsection();
   }
 
@@ -1010,13 +1031,24 @@ namespace PolyFrac
     output.print_timings   = prm->get_bool("Print timings");
     prm->leave_subsection();
 
+    prm->enter_subsection("Time");
+    time.end_time         = prm->get_double("End time");
+    time.time_step        = prm->get_double("Time step");
+    time.refine_with_mesh = prm->get_bool("Refine time step with mesh");
+    prm->leave_subsection();
+    AssertThrow(time.end_time > 0 && time.time_step > 0,
+                ExcMessage("In <" + file_name +
+                           ">: Time/End time and Time/Time step must be > 0 "
+                           "(they are " +
+                           std::to_string(time.end_time) + " and " +
+                           std::to_string(time.time_step) + ")."));
+
     warn_unused_entries();
     check_expressions();
     AssertThrow(model != "poromechanics" || file_name.empty(),
-                ExcMessage("In <" + file_name +
-                           ">: Model = poromechanics is not available in this "
-                           "version of PolyFrac; use elasticity or contact "
-                           "mechanics."));
+                ExcMessage("In <" + file_name + ">: Model = " + model +
+                           " is not available in this version of PolyFrac; "
+                           "use elasticity, contact mechanics or flow."));
   }
 
 

@@ -374,8 +374,7 @@ namespace PolyFrac
         field.centroids.push_back(geometry.faces[face.face].centroid);
         field.values.push_back(face_multiplier(solution, i));
       }
-    field.states.normal     = normal_state;
-    field.states.tangential = tangential_state;
+    field.states = states;
     return field;
   }
 
@@ -523,8 +522,18 @@ namespace PolyFrac
 
   template <int dim>
   void
-  ContactMechanics<dim>::solve(std::ostream &out)
+  ContactMechanics<dim>::solve(MechanicalState<dim> &state, std::ostream &out)
   {
+    if (state.displacement.size() == dofs.n_displacement_dofs())
+      {
+        for (unsigned int k = 0; k < state.displacement.size(); ++k)
+          solution(k) = state.displacement(k);
+        for (unsigned int i = 0; i < state.multipliers.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            solution(dofs.multiplier_dof(i, d)) = state.multipliers[i][d];
+      }
+    previous_step = solution;
+
     const unsigned int n_steps = prm.contact.n_load_steps;
     double             reached = 0;
     for (unsigned int k = 1; k <= n_steps; ++k)
@@ -551,8 +560,7 @@ namespace PolyFrac
                 // The states of the converged step, with the slip
                 // increment from the previous step (Coulomb).
                 const Residual R = residual(x, load);
-                normal_state     = R.normal;
-                tangential_state = R.tangential;
+                states           = {R.normal, R.tangential};
                 solution         = x;
                 previous_step    = x;
                 reached          = load;
@@ -583,13 +591,13 @@ namespace PolyFrac
           }
       }
 
-    Vector<double> u(dofs.n_displacement_dofs());
-    for (unsigned int k = 0; k < u.size(); ++k)
-      u(k) = solution(k);
-    std::vector<Tensor<1, dim>> multipliers;
+    state.displacement.reinit(dofs.n_displacement_dofs());
+    for (unsigned int k = 0; k < state.displacement.size(); ++k)
+      state.displacement(k) = solution(k);
+    state.multipliers.clear();
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      multipliers.push_back(face_multiplier(solution, i));
-    elasticity.set_solution(u, multipliers);
+      state.multipliers.push_back(face_multiplier(solution, i));
+    state.contact = states;
   }
 
 

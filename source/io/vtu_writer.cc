@@ -151,18 +151,26 @@ namespace PolyFrac
 
   template <int dim>
   PatchData<dim, dim>
-  matrix_patches(const MeshGeometry<dim>    &geometry,
-                 const FractureNetwork<dim> &network,
-                 const DoFMap<dim>          &dofs,
-                 const Elasticity<dim>      &elasticity)
+  matrix_patches(const MeshGeometry<dim>          &geometry,
+                 const FractureNetwork<dim>       &network,
+                 const DoFMap<dim>                &dofs,
+                 const Elasticity<dim> *const      elasticity,
+                 const MechanicalState<dim> *const state,
+                 const std::vector<ScalarField>   &cell_fields)
   {
     using namespace DataComponentInterpretation;
-    PatchData<dim, dim> data =
-      layout<dim, dim>({{"displacement", dim, component_is_part_of_vector},
-                        {"stress", dim * dim, component_is_part_of_tensor},
-                        {"polytope", 1, component_is_scalar}});
-    const unsigned int n_components = data.names.size();
-    const auto        &mesh         = geometry.mesh;
+    const bool         mechanics = elasticity != nullptr && state != nullptr;
+    std::vector<Field> fields;
+    if (mechanics)
+      fields = {{"displacement", dim, component_is_part_of_vector},
+                {"stress", dim * dim, component_is_part_of_tensor}};
+    fields.push_back({"polytope", 1, component_is_scalar});
+    for (const ScalarField &field : cell_fields)
+      fields.push_back({field.name, 1, component_is_scalar});
+    PatchData<dim, dim> data           = layout<dim, dim>(fields);
+    const unsigned int  n_components   = data.names.size();
+    const unsigned int  first_constant = mechanics ? dim : 0;
+    const auto         &mesh           = geometry.mesh;
 
     // Reconstructions are per polytope: cache the last one (fine cells of
     // an agglomerate are usually consecutive).
@@ -175,18 +183,23 @@ namespace PolyFrac
         const unsigned int K = fine.polytope;
         if (K != cached)
           {
-            local  = std::make_unique<LocalReconstruction<dim>>(geometry,
-                                                               dofs,
-                                                               network,
-                                                               K);
-            values = elasticity.local_values(K);
-            const Tensor<2, dim> sigma =
-              elasticity.stress(local->gradient(values));
             cell_values.clear();
-            for (unsigned int c = 0; c < dim * dim; ++c)
-              cell_values.push_back(
-                sigma[Tensor<2, dim>::unrolled_to_component_indices(c)]);
+            if (mechanics)
+              {
+                local  = std::make_unique<LocalReconstruction<dim>>(geometry,
+                                                                   dofs,
+                                                                   network,
+                                                                   K);
+                values = state->local_values(dofs, K);
+                const Tensor<2, dim> sigma =
+                  elasticity->stress(local->gradient(values));
+                for (unsigned int c = 0; c < dim * dim; ++c)
+                  cell_values.push_back(
+                    sigma[Tensor<2, dim>::unrolled_to_component_indices(c)]);
+              }
             cell_values.push_back(K);
+            for (const ScalarField &field : cell_fields)
+              cell_values.push_back(field.values[K]);
             cached = K;
           }
         std::vector<Point<dim>> vertices;
@@ -194,7 +207,7 @@ namespace PolyFrac
           vertices.push_back(mesh.vertices[v]);
         auto patch = make_patch<dim, dim>(fine.type, vertices, n_components);
         const auto &list = mesh.cells[K].vertices;
-        for (unsigned int i = 0; i < fine.vertices.size(); ++i)
+        for (unsigned int i = 0; mechanics && i < fine.vertices.size(); ++i)
           {
             const unsigned int v = fine.vertices[i];
             const auto it = std::lower_bound(list.begin(), list.end(), v);
@@ -205,7 +218,7 @@ namespace PolyFrac
             for (unsigned int d = 0; d < dim; ++d)
               patch.data(d, i) = u[d];
           }
-        set_constant(patch, dim, cell_values);
+        set_constant(patch, first_constant, cell_values);
         data.patches.push_back(std::move(patch));
       }
     sort_along_hilbert_curve(data.patches);
@@ -216,28 +229,32 @@ namespace PolyFrac
 
   template <int dim>
   PatchData<dim - 1, dim>
-  fracture_patches(const MeshGeometry<dim>            &geometry,
-                   const FractureNetwork<dim>         &network,
-                   const Elasticity<dim>              &elasticity,
-                   const std::vector<NormalState>     &normal_state,
-                   const std::vector<TangentialState> &tangential_state)
+  fracture_patches(const MeshGeometry<dim>          &geometry,
+                   const FractureNetwork<dim>       &network,
+                   const DoFMap<dim>                &dofs,
+                   const MechanicalState<dim> *const state,
+                   const std::vector<ScalarField>   &face_fields)
   {
     using namespace DataComponentInterpretation;
-    std::vector<Field> fields = {
-      {"fracture", 1, component_is_scalar},
-      {"n_plus", dim, component_is_part_of_vector},
-      {"jump", dim, component_is_part_of_vector},
-      {"normal_jump", 1, component_is_scalar},
-      {"tangential_jump", dim, component_is_part_of_vector},
-      {"traction", dim, component_is_part_of_vector},
-      {"normal_traction", 1, component_is_scalar},
-      {"tangential_traction", dim, component_is_part_of_vector}};
-    const bool with_states = !normal_state.empty();
+    std::vector<Field> fields = {{"fracture", 1, component_is_scalar},
+                                 {"n_plus", dim, component_is_part_of_vector}};
+    if (state != nullptr)
+      for (const Field &field : std::vector<Field>{
+             {"jump", dim, component_is_part_of_vector},
+             {"normal_jump", 1, component_is_scalar},
+             {"tangential_jump", dim, component_is_part_of_vector},
+             {"traction", dim, component_is_part_of_vector},
+             {"normal_traction", 1, component_is_scalar},
+             {"tangential_traction", dim, component_is_part_of_vector}})
+        fields.push_back(field);
+    const bool with_states = state != nullptr && !state->contact.normal.empty();
     if (with_states)
       {
         fields.push_back({"normal_state", 1, component_is_scalar});
         fields.push_back({"tangential_state", 1, component_is_scalar});
       }
+    for (const ScalarField &field : face_fields)
+      fields.push_back({field.name, 1, component_is_scalar});
     PatchData<dim - 1, dim> data         = layout<dim - 1, dim>(fields);
     const unsigned int      n_components = data.names.size();
 
@@ -245,21 +262,27 @@ namespace PolyFrac
       {
         const auto          &ff     = network.fracture_faces[i];
         const Tensor<1, dim> n      = network.normal(i);
-        const Tensor<1, dim> u      = elasticity.jump_value(i);
-        const Tensor<1, dim> lambda = elasticity.fracture_traction(i);
         std::vector<double>  values = {static_cast<double>(ff.fracture)};
         append(values, n);
-        append(values, u);
-        values.push_back(u * n);
-        append(values, u - (u * n) * n);
-        append(values, lambda);
-        values.push_back(lambda * n);
-        append(values, lambda - (lambda * n) * n);
+        if (state != nullptr)
+          {
+            const Tensor<1, dim> u =
+              state->jump_value(geometry, dofs, network, i);
+            const Tensor<1, dim> lambda = state->multipliers[i];
+            append(values, u);
+            values.push_back(u * n);
+            append(values, u - (u * n) * n);
+            append(values, lambda);
+            values.push_back(lambda * n);
+            append(values, lambda - (lambda * n) * n);
+          }
         if (with_states)
           {
-            values.push_back(static_cast<int>(normal_state[i]));
-            values.push_back(static_cast<int>(tangential_state[i]));
+            values.push_back(static_cast<int>(state->contact.normal[i]));
+            values.push_back(static_cast<int>(state->contact.tangential[i]));
           }
+        for (const ScalarField &field : face_fields)
+          values.push_back(field.values[i]);
         for (const auto &[type, vertices] :
              face_pieces(geometry.mesh.vertices,
                          geometry.mesh.faces[ff.face].vertices))
@@ -337,24 +360,28 @@ namespace PolyFrac
   matrix_patches(const MeshGeometry<2> &,
                  const FractureNetwork<2> &,
                  const DoFMap<2> &,
-                 const Elasticity<2> &);
+                 const Elasticity<2> *const,
+                 const MechanicalState<2> *const,
+                 const std::vector<ScalarField> &);
+  template PatchData<1, 2>
+  fracture_patches(const MeshGeometry<2> &,
+                   const FractureNetwork<2> &,
+                   const DoFMap<2> &,
+                   const MechanicalState<2> *const,
+                   const std::vector<ScalarField> &);
   template PatchData<3, 3>
   matrix_patches(const MeshGeometry<3> &,
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
-                 const Elasticity<3> &);
-  template PatchData<1, 2>
-  fracture_patches(const MeshGeometry<2> &,
-                   const FractureNetwork<2> &,
-                   const Elasticity<2> &,
-                   const std::vector<NormalState> &,
-                   const std::vector<TangentialState> &);
+                 const Elasticity<3> *const,
+                 const MechanicalState<3> *const,
+                 const std::vector<ScalarField> &);
   template PatchData<2, 3>
   fracture_patches(const MeshGeometry<3> &,
                    const FractureNetwork<3> &,
-                   const Elasticity<3> &,
-                   const std::vector<NormalState> &,
-                   const std::vector<TangentialState> &);
+                   const DoFMap<3> &,
+                   const MechanicalState<3> *const,
+                   const std::vector<ScalarField> &);
   template void
   VtuSeries::write(const PatchData<2, 2> &, const double);
   template void

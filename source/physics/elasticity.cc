@@ -167,7 +167,6 @@ namespace PolyFrac
     const types::global_dof_index n_dofs = dofs.n_displacement_dofs();
 
     rhs.reinit(n_dofs);
-    solution.reinit(n_dofs);
     {
       // Scoped: the dynamic pattern is freed before the cell loop.
       DynamicSparsityPattern dsp(n_dofs);
@@ -251,7 +250,7 @@ namespace PolyFrac
         const unsigned int   f = network.fracture_faces[i].face;
         const Tensor<1, dim> load =
           -geometry.faces[f].measure *
-          ((with_prescribed_traction ? fracture_traction(i) :
+          ((with_prescribed_traction ? prescribed_traction(i) :
                                        Tensor<1, dim>()) +
            fracture_pressure->value(geometry.faces[f].centroid) *
              network.normal(i));
@@ -294,10 +293,8 @@ namespace PolyFrac
 
   template <int dim>
   Tensor<1, dim>
-  Elasticity<dim>::fracture_traction(const unsigned int i) const
+  Elasticity<dim>::prescribed_traction(const unsigned int i) const
   {
-    if (!multipliers.empty())
-      return multipliers[i];
     Vector<double> value(dim);
     traction->vector_value(
       geometry.faces[network.fracture_faces[i].face].centroid, value);
@@ -310,63 +307,28 @@ namespace PolyFrac
 
 
   template <int dim>
-  void
-  Elasticity<dim>::set_solution(const Vector<double>              &u,
-                                const std::vector<Tensor<1, dim>> &lambda)
-  {
-    solution    = u;
-    multipliers = lambda;
-  }
-
-
-
-  template <int dim>
   unsigned int
-  Elasticity<dim>::solve()
+  Elasticity<dim>::solve(MechanicalState<dim> &state)
   {
+    Vector<double> &u = state.displacement;
+    u.reinit(dofs.n_displacement_dofs());
     unsigned int iterations = 0;
     if (prm.solver.method == "direct")
       {
         SparseDirectUMFPACK direct;
         direct.initialize(matrix);
-        direct.vmult(solution, rhs);
+        direct.vmult(u, rhs);
       }
     else
-      iterations = solve_cg_amg(trilinos_matrix,
-                                solution,
-                                rhs,
-                                dofs,
-                                geometry.mesh.vertices,
-                                prm.solver);
-    constraints.distribute(solution);
+      iterations = solve_cg_amg(
+        trilinos_matrix, u, rhs, dofs, geometry.mesh.vertices, prm.solver);
+    constraints.distribute(u);
+
+    state.multipliers.clear();
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      state.multipliers.push_back(prescribed_traction(i));
+    state.contact = ContactStates();
     return iterations;
-  }
-
-
-
-  template <int dim>
-  std::vector<Tensor<1, dim>>
-  Elasticity<dim>::local_values(const unsigned int c) const
-  {
-    const std::vector<types::global_dof_index> local = dofs.cell_dofs(c);
-    std::vector<Tensor<1, dim>>                values(local.size() / dim);
-    for (unsigned int t = 0; t < values.size(); ++t)
-      for (unsigned int d = 0; d < dim; ++d)
-        values[t][d] = solution(local[dim * t + d]);
-    return values;
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  Elasticity<dim>::jump_value(const unsigned int i) const
-  {
-    Tensor<1, dim> result;
-    for (const auto &[block, w] : jump(geometry, dofs, network, i))
-      for (unsigned int d = 0; d < dim; ++d)
-        result[d] += w * solution(dim * block + d);
-    return result;
   }
 
 

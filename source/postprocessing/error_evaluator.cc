@@ -1,6 +1,7 @@
 #include <deal.II/base/bounding_box.h>
 
 #include <polyfrac/base/expressions.h>
+#include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
 #include <array>
@@ -107,7 +108,7 @@ namespace PolyFrac
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
-                 const Elasticity<dim>      &elasticity)
+                 const MechanicalState<dim> &state)
   {
     Errors errors;
     if (!prm.exact.displacement.empty())
@@ -122,7 +123,7 @@ namespace PolyFrac
         for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
           {
             const LocalReconstruction<dim> local(geometry, dofs, network, c);
-            const auto                     values = elasticity.local_values(c);
+            const auto                     values = state.local_values(dofs, c);
             const Tensor<2, dim>           grad_h = local.gradient(values);
             for (const auto &q : geometry.quadrature(c))
               {
@@ -145,8 +146,8 @@ namespace PolyFrac
       {
         const auto exact = exact_jump<dim>(prm);
         const auto sums  = fracture_face_errors<dim>(
-          *exact, geometry, network, [&elasticity](const unsigned int i) {
-            return elasticity.jump_value(i);
+          *exact, geometry, network, [&](const unsigned int i) {
+            return state.jump_value(geometry, dofs, network, i);
           });
         errors.jump = ratio(sums[0], sums[2]);
       }
@@ -163,8 +164,8 @@ namespace PolyFrac
           BoundingBox<dim>(geometry.mesh.vertices).get_boundary_points();
         const double diameter = corners.first.distance(corners.second);
         const auto   sums     = fracture_face_errors<dim>(
-          *exact, geometry, network, [&elasticity](const unsigned int i) {
-            return elasticity.fracture_traction(i);
+          *exact, geometry, network, [&state](const unsigned int i) {
+            return state.multipliers[i];
           });
         errors.lambda_l2   = ratio(sums[0], sums[2]);
         errors.lambda_hm12 = ratio(sums[1], diameter * sums[2]);
@@ -228,17 +229,18 @@ namespace PolyFrac
 
   template <int dim>
   std::optional<MaximumOpening>
-  maximum_opening(const Parameters               &prm,
-                  const MeshGeometry<dim>        &geometry,
-                  const FractureNetwork<dim>     &network,
-                  const Elasticity<dim>          &elasticity,
-                  const std::vector<NormalState> &states)
+  maximum_opening(const Parameters           &prm,
+                  const MeshGeometry<dim>    &geometry,
+                  const FractureNetwork<dim> &network,
+                  const DoFMap<dim>          &dofs,
+                  const MechanicalState<dim> &state)
   {
-    std::optional<MaximumOpening> result;
+    std::optional<MaximumOpening>   result;
+    const std::vector<NormalState> &states = state.contact.normal;
     for (unsigned int i = 0; i < states.size(); ++i)
       {
-        const double opening =
-          -elasticity.jump_value(i) * network.fracture_faces[i].normal;
+        const double opening = -state.jump_value(geometry, dofs, network, i) *
+                               network.fracture_faces[i].normal;
         if (states[i] == NormalState::open && opening > 0 &&
             (!result || opening > result->value))
           result = MaximumOpening{opening, i, {}};
@@ -263,13 +265,13 @@ namespace PolyFrac
                  const MeshGeometry<2> &,
                  const FractureNetwork<2> &,
                  const DoFMap<2> &,
-                 const Elasticity<2> &);
+                 const MechanicalState<2> &);
   template Errors
   compute_errors(const Parameters &,
                  const MeshGeometry<3> &,
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
-                 const Elasticity<3> &);
+                 const MechanicalState<3> &);
   template void
   add_pressure_errors(const Parameters &,
                       const MeshGeometry<2> &,
@@ -290,12 +292,12 @@ namespace PolyFrac
   maximum_opening(const Parameters &,
                   const MeshGeometry<2> &,
                   const FractureNetwork<2> &,
-                  const Elasticity<2> &,
-                  const std::vector<NormalState> &);
+                  const DoFMap<2> &,
+                  const MechanicalState<2> &);
   template std::optional<MaximumOpening>
   maximum_opening(const Parameters &,
                   const MeshGeometry<3> &,
                   const FractureNetwork<3> &,
-                  const Elasticity<3> &,
-                  const std::vector<NormalState> &);
+                  const DoFMap<3> &,
+                  const MechanicalState<3> &);
 } // namespace PolyFrac

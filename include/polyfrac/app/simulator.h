@@ -3,62 +3,36 @@
 
 #include <deal.II/base/timer.h>
 
-#include <deal.II/grid/tria.h>
-
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/model.h>
 #include <polyfrac/base/parameters.h>
-#include <polyfrac/contact/contact_mechanics.h>
-#include <polyfrac/dofs/dof_map.h>
-#include <polyfrac/fractures/fracture_network.h>
-#include <polyfrac/mesh/mesh_geometry.h>
-#include <polyfrac/mesh/polytopal_mesh.h>
+#include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 
 #include <memory>
-#include <optional>
 #include <ostream>
+#include <string>
+#include <vector>
 
 namespace PolyFrac
 {
   using namespace dealii;
 
   /**
-   * Everything the scheme needs on one refinement level, built from the
-   * parameters in the order of the mesh pipeline (MeshBuilder): deal.II
-   * triangulation, polytopal view, distortion, agglomeration, geometry,
-   * fracture network, DoF map.
-   */
-  template <int dim>
-  class LevelDiscretization
-  {
-  public:
-    /** Builds the mesh of refinement level @p level of the scene of @p prm
-     * and everything on it, in the order of the members below. */
-    LevelDiscretization(const Parameters &prm, const unsigned int level);
-
-    /** Prints cells, faces, node sides, fractures and the mesh quality. */
-    void
-    print_summary(std::ostream &out) const;
-
-    /** The deal.II triangulation (generated box or gmsh file, refined). */
-    Triangulation<dim> triangulation;
-    /** Its polytopal view, distorted and agglomerated. */
-    std::unique_ptr<PolytopalMesh<dim>> mesh;
-    /** The geometry of #mesh. */
-    std::unique_ptr<MeshGeometry<dim>> geometry;
-    /** The fracture faces of #mesh. */
-    std::unique_ptr<FractureNetwork<dim>> network;
-    /** The node sides and bubbles of #mesh cut by #network. */
-    std::unique_ptr<DoFMap<dim>> dofs;
-  };
-
-  /**
-   * The PolyFrac program: runs the scene of a parameter file on each level
-   * of the convergence study, writes the VTU files and their `.pvd`
-   * records, `convergence.csv` and the used parameters to the output
+   * The PolyFrac program, a driver that knows no physics: for each level of
+   * the convergence study it builds the discretisation (LevelDiscretization)
+   * and the model of Model/Model on it (make_model()), hands it what the
+   * coarser level's model left (nested iteration), and runs its steps: one
+   * for a static model, implicit Euler steps from t = 0 to Time/End time
+   * with deal.II's DiscreteTime for a time-dependent one (a step that fails
+   * is halved and retried, at most 10 times in a row). It writes the VTU
+   * series of each level over its steps with their `.pvd` records,
+   * `time_series-level-K.csv` (time-dependent models), `convergence.csv`
+   * (errors at the end time) and the used parameters to the output
    * directory, and prints the convergence table with the observed rates,
    * the table of wall times per section (`Output/Print timings`) and the
-   * line naming the files written; stops with an error when a check of
-   * the convergence study (Maximum errors, Minimum rates) fails.
+   * line naming the files written; stops with an error when a check of the
+   * convergence study (Maximum errors, Minimum rates) fails.
    */
   template <int dim>
   class Simulator
@@ -73,19 +47,25 @@ namespace PolyFrac
     run(std::ostream &out);
 
   private:
+    /** The output files of one level: its VTU series and time series. */
+    class LevelOutput;
+
     /** Runs one level; @p timer gets its sections. */
     ConvergenceRow
     run_level(const unsigned int level, TimerOutput &timer, std::ostream &out);
 
     /**
-     * Writes the matrix and fracture VTU series of @p level (one step, at
-     * t = 0) and records their files.
+     * Runs the steps of @p model on @p level (one for a static model);
+     * writes the initial state and each converged step of a time-dependent
+     * model to @p output and returns the Newton iterations summed over the
+     * steps, if the model has any.
      */
-    void
-    write_vtu(const unsigned int                 level,
-              const LevelDiscretization<dim>    &discretization,
-              const Elasticity<dim>             &mechanics,
-              const ContactMechanics<dim> *const contact);
+    std::optional<unsigned int>
+    run_steps(const unsigned int level,
+              Model<dim>        &model,
+              LevelOutput       &output,
+              TimerOutput       &timer,
+              std::ostream      &out);
 
     /**
      * Prints how many checks of Convergence study/Maximum errors and
@@ -98,8 +78,8 @@ namespace PolyFrac
     std::vector<ConvergenceRow> rows;
     /** The files written to the output directory, in order. */
     std::vector<std::string> written_files;
-    /** The multipliers of the last level (contact mechanics). */
-    std::optional<MultiplierField<dim>> previous_multipliers;
+    /** What the model of the last level handed over (nested iteration). */
+    std::shared_ptr<const LevelStart> coarser;
   };
 } // namespace PolyFrac
 

@@ -96,7 +96,7 @@ namespace PolyFrac
     /** Expressions/Function constants, as name -> value. */
     std::map<std::string, double> constants;
 
-    /** Model/Model: elasticity | contact mechanics (poromechanics: not yet). */
+    /** Model/Model: elasticity | contact mechanics | flow | poromechanics. */
     std::string model;
 
     /** Mesh. Points have 3 coordinates; those beyond dim are 0. */
@@ -291,6 +291,17 @@ namespace PolyFrac
       /** Print timings: whether the timing table is printed. */
       bool print_timings;
     } output; /**< The subsection Output. */
+
+    /** Time (time-dependent models). */
+    struct TimeData
+    {
+      /** End time: the steps run from t = 0 to it. */
+      double end_time;
+      /** Time step Δt of level 0. */
+      double time_step;
+      /** Refine time step with mesh: level k uses Δt / 2^k. */
+      bool refine_with_mesh;
+    } time; /**< The subsection Time. */
 
   private:
     static void

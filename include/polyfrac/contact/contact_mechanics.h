@@ -20,36 +20,6 @@ namespace PolyFrac
 {
   using namespace dealii;
 
-  /** Normal contact state of a fracture face. */
-  enum class NormalState
-  {
-    /** Open: λ_n = 0 and [[u]]_n ≤ 0 (the fracture opens). */
-    open,
-    /** Contact: [[u]]_n = 0, λ_n ≥ 0. */
-    contact
-  };
-
-  /** Tangential state of a fracture face (free: no friction acts). */
-  enum class TangentialState
-  {
-    /** Stick: [[u − u^{n−1}]]_τ = 0, |λ_τ| ≤ g. */
-    stick,
-    /** Slip: λ_τ = g s/|s| with the slip s = [[u − u^{n−1}]]_τ ≠ 0. */
-    slip,
-    /** Free: no friction acts (frictionless, or an open face under Coulomb
-     * friction): λ_τ = 0. */
-    free
-  };
-
-  /** The contact states of the fracture faces. */
-  struct ContactStates
-  {
-    /** Normal state, per fracture face. */
-    std::vector<NormalState> normal;
-    /** Tangential state, per fracture face. */
-    std::vector<TangentialState> tangential;
-  };
-
   /**
    * The multipliers and states of a converged level, face by face, with the
    * fracture and centroid of each face: the start of Newton on the next
@@ -132,9 +102,14 @@ namespace PolyFrac
     MultiplierField<dim>
     multiplier_field() const;
 
-    /** Runs all load steps; prints each Newton iteration to @p out. */
+    /**
+     * Runs all load steps from @p state (zero, or the state of the previous
+     * time step: u^{n−1} of the Coulomb slip increment) and writes the
+     * converged displacement, multipliers and contact states to it; prints
+     * each Newton iteration to @p out.
+     */
     void
-    solve(std::ostream &out);
+    solve(MechanicalState<dim> &state, std::ostream &out);
 
     /** Total number of Newton iterations over the load steps. */
     unsigned int
@@ -143,24 +118,19 @@ namespace PolyFrac
       return total_iterations;
     }
 
+    /** The elasticity operator (material law and Dirichlet data). */
+    const Elasticity<dim> &
+    operator_elasticity() const
+    {
+      return elasticity;
+    }
+
     /** Unknowns of the linear systems: u and λ less the fixed dofs. */
     types::global_dof_index
     n_unknowns() const
     {
       return solution.size() - dirichlet.size();
     }
-
-    /** The displacement (and the multipliers as fracture traction). */
-    const Elasticity<dim> &
-    displacement() const
-    {
-      return elasticity;
-    }
-
-    /** The normal state of each fracture face (after solve()). */
-    std::vector<NormalState> normal_state;
-    /** The tangential state of each fracture face (after solve()). */
-    std::vector<TangentialState> tangential_state;
 
   private:
     /** Jump [[u]]_σ and multiplier λ_σ of face i in @p x. */
@@ -250,7 +220,12 @@ namespace PolyFrac
     /** The condensed Newton steps (Linear solver/Method = AMG). */
     std::unique_ptr<FaceCondensation<dim>> condensation;
 
+    /** The Newton unknowns (u, λ) of the current load step and of the last
+     * converged one (u^{n−1} of the Coulomb slip increment); solve() copies
+     * them from and to its MechanicalState. */
     Vector<double> solution, previous_step;
+    /** The contact states of the last converged load step. */
+    ContactStates states;
     /** Multipliers and states to start from (start_from()). */
     std::optional<MultiplierField<dim>> initial_guess;
     unsigned int                        total_iterations = 0;

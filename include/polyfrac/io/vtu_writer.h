@@ -5,8 +5,8 @@
 
 #include <deal.II/numerics/data_component_interpretation.h>
 
-#include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/mechanical_state.h>
 
 #include <string>
 #include <tuple>
@@ -42,40 +42,55 @@ namespace PolyFrac
       ranges;
   };
 
+  /** A scalar field with one value per polytope (matrix output) or per
+   * fracture face (fracture output), written as constant patch data. */
+  struct ScalarField
+  {
+    /** The name of the data array in the VTU file. */
+    std::string name;
+    /** One value per polytope or per fracture face. */
+    std::vector<double> values;
+  };
+
   /**
    * The matrix output: one patch per cell of the underlying deal.II mesh
    * (vertices in deal.II order), so each cell has its own copy of its
    * vertices and the displacement, a node-side field, shows its jump
    * across the fractures. A vertex of the fine cell that is a vertex of
    * its polytope K gets the node-side value u_{Ks}; any other (inside an
-   * agglomerate) gets Π^K u. `polytope` (the index of K) and `stress` (σ_K,
-   * a tensor) are constant over the patch.
+   * agglomerate) gets Π^K u. `stress` (σ_K, a tensor), `polytope` (the
+   * index of K) and the @p cell_fields are constant over the patch.
+   * Without @p elasticity and @p state (a model without mechanics) the
+   * displacement and the stress are left out.
    */
   template <int dim>
   PatchData<dim, dim>
-  matrix_patches(const MeshGeometry<dim>    &geometry,
-                 const FractureNetwork<dim> &network,
-                 const DoFMap<dim>          &dofs,
-                 const Elasticity<dim>      &elasticity);
+  matrix_patches(const MeshGeometry<dim>          &geometry,
+                 const FractureNetwork<dim>       &network,
+                 const DoFMap<dim>                &dofs,
+                 const Elasticity<dim> *const      elasticity,
+                 const MechanicalState<dim> *const state,
+                 const std::vector<ScalarField>   &cell_fields = {});
 
   /**
    * The fracture output: patches of dimension dim-1, one per fracture face
    * (a segment in 2D; in 3D a triangle, a quadrilateral, or for a polygon
    * with more vertices the fan of triangles (s1, s2, x^v_σ) of its edges
    * around the vertex average), each with constant data: `fracture`,
-   * `n_plus`, the jump [u] (`jump`, global components), `normal_jump` [u]·n^+
-   * and `tangential_jump`, the traction λ (`traction`), `normal_traction` and
-   * `tangential_traction`; with contact (@p normal_state given)
-   * `normal_state` (0 open, 1 contact) and `tangential_state` (0 stick, 1
-   * slip, 2 free: no friction acts).
+   * `n_plus`; with a mechanical @p state the jump [u] (`jump`, global
+   * components), `normal_jump` [u]·n^+ and `tangential_jump`, the traction
+   * λ (`traction`), `normal_traction` and `tangential_traction`, and with
+   * contact states `normal_state` (0 open, 1 contact) and
+   * `tangential_state` (0 stick, 1 slip, 2 free: no friction acts); then
+   * the @p face_fields.
    */
   template <int dim>
   PatchData<dim - 1, dim>
-  fracture_patches(const MeshGeometry<dim>            &geometry,
-                   const FractureNetwork<dim>         &network,
-                   const Elasticity<dim>              &elasticity,
-                   const std::vector<NormalState>     &normal_state     = {},
-                   const std::vector<TangentialState> &tangential_state = {});
+  fracture_patches(const MeshGeometry<dim>          &geometry,
+                   const FractureNetwork<dim>       &network,
+                   const DoFMap<dim>                &dofs,
+                   const MechanicalState<dim> *const state,
+                   const std::vector<ScalarField>   &face_fields = {});
 
   /**
    * A series of VTU files over one time axis and its `.pvd` record, written
@@ -87,7 +102,8 @@ namespace PolyFrac
    *   VtuSeries series(directory,
    *                    "solution-level-0",
    *                    DataOutBase::VtkFlags::best_compression);
-   *   series.write(matrix_patches(geometry, network, dofs, elasticity), 0.);
+   *   series.write(matrix_patches(geometry, network, dofs, &elasticity,
+   * &state), 0.);
    * @endcode
    */
   class VtuSeries

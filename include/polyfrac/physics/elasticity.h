@@ -13,6 +13,7 @@
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
+#include <polyfrac/physics/mechanical_state.h>
 
 #include <memory>
 
@@ -56,9 +57,13 @@ namespace PolyFrac
     void
     assemble();
 
-    /** Solves; returns the number of linear iterations (0 for UMFPACK). */
+    /**
+     * Solves; writes the displacement and the prescribed fracture traction
+     * (as the multipliers) to @p state. Returns the number of linear
+     * iterations (0 for UMFPACK).
+     */
     unsigned int
-    solve();
+    solve(MechanicalState<dim> &state);
 
     /** Unknowns of the linear system: displacement dofs not fixed by Dirichlet
      * data. */
@@ -68,24 +73,14 @@ namespace PolyFrac
       return dofs.n_displacement_dofs() - constraints.n_constraints();
     }
 
-    /** Local values of cell @p c (node sides, then bubbles). */
-    std::vector<Tensor<1, dim>>
-    local_values(const unsigned int c) const;
-
-    /** [[u_D]]_σ on fracture face @p i. */
-    Tensor<1, dim>
-    jump_value(const unsigned int i) const;
-
     /** σ = 2μ ε + λ div I of the displacement gradient @p gradient (∇^K u). */
     Tensor<2, dim>
     stress(const Tensor<2, dim> &gradient) const;
 
-    /**
-     * λ_σ on fracture face @p i: the prescribed λ(x̄_σ), or the multiplier
-     * given by set_solution() (contact mechanics).
-     */
+    /** The prescribed traction λ(x̄_σ) (Fractures/Traction) on fracture
+     * face @p i. */
     Tensor<1, dim>
-    fracture_traction(const unsigned int i) const;
+    prescribed_traction(const unsigned int i) const;
 
     /** The Dirichlet constraints of the node sides (values g_D). */
     void
@@ -107,14 +102,6 @@ namespace PolyFrac
     void
     assemble_operator(SparseMatrix<double> &system_matrix,
                       Vector<double>       &system_rhs) const;
-
-    /** Sets the displacement and the multipliers computed elsewhere. */
-    void
-    set_solution(const Vector<double>              &u,
-                 const std::vector<Tensor<1, dim>> &multipliers);
-
-    /** The displacement: node sides, then bubbles (DoFMap numbering). */
-    Vector<double> solution;
 
   private:
     /** Throws, listing the ids the mesh has, if a Dirichlet or Neumann
@@ -162,8 +149,6 @@ namespace PolyFrac
     /** System matrix for Linear solver/Method = AMG. */
     TrilinosWrappers::SparseMatrix trilinos_matrix;
     Vector<double>                 rhs;
-    /** Multipliers set by set_solution(); empty when λ is prescribed. */
-    std::vector<Tensor<1, dim>> multipliers;
   };
 } // namespace PolyFrac
 

@@ -2,9 +2,8 @@
 #define polyfrac_postprocessing_error_evaluator_h
 
 #include <polyfrac/base/parameters.h>
-#include <polyfrac/contact/contact_mechanics.h>
-#include <polyfrac/physics/elasticity.h>
 #include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/mechanical_state.h>
 
 #include <optional>
 #include <string>
@@ -66,15 +65,15 @@ namespace PolyFrac
   const std::vector<ErrorColumn> &
   error_columns();
 
-  /** The Errors of the solution in @p elasticity against the exact fields
-   * of @p prm. */
+  /** The Errors of the mechanical @p state against the exact fields of
+   * @p prm. */
   template <int dim>
   Errors
   compute_errors(const Parameters           &prm,
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
-                 const Elasticity<dim>      &elasticity);
+                 const MechanicalState<dim> &state);
 
   /**
    * Sets err_pressure and err_fracture_pressure of @p errors (doc/scheme.md
@@ -111,11 +110,11 @@ namespace PolyFrac
   /** The MaximumOpening, or nothing when no face is open. */
   template <int dim>
   std::optional<MaximumOpening>
-  maximum_opening(const Parameters               &prm,
-                  const MeshGeometry<dim>        &geometry,
-                  const FractureNetwork<dim>     &network,
-                  const Elasticity<dim>          &elasticity,
-                  const std::vector<NormalState> &states);
+  maximum_opening(const Parameters           &prm,
+                  const MeshGeometry<dim>    &geometry,
+                  const FractureNetwork<dim> &network,
+                  const DoFMap<dim>          &dofs,
+                  const MechanicalState<dim> &state);
 } // namespace PolyFrac
 
 #endif

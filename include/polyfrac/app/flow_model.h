@@ -1,0 +1,77 @@
+#ifndef polyfrac_app_flow_model_h
+#define polyfrac_app_flow_model_h
+
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/model.h>
+#include <polyfrac/dofs/pressure_dof_map.h>
+#include <polyfrac/fractures/fracture_edges.h>
+#include <polyfrac/physics/flow.h>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * Model = flow: matrix and fracture flow alone (Flow), implicit Euler in
+   * time from Flow/Initial pressure, with the storage of the matrix given by
+   * Flow/Inverse Biot modulus (c_K = 1/M, so 1/M = 0 gives a steady problem
+   * at each step), no fracture storage (a_σ = 0: a scene without mechanics
+   * has a fixed aperture) and the aperture Flow/Fracture aperture at
+   * contact d_0 on every fracture face (Flow::flow_step_data()). Its state is
+   * the pressure vector of PressureDoFMap.
+   */
+  template <int dim>
+  class FlowModel : public Model<dim>
+  {
+  public:
+    /** The flow of @p prm on @p discretization (both must outlive it),
+     * starting from Flow/Initial pressure. */
+    FlowModel(const Parameters               &prm,
+              const LevelDiscretization<dim> &discretization);
+
+    bool
+    is_time_dependent() const override
+    {
+      return true;
+    }
+
+    /** One implicit Euler step; prints the CG iterations (AMG) and the mass
+     * balance residual. */
+    StepReport
+    step(const double t_old, const double t_new, std::ostream &out) override;
+
+    types::global_dof_index
+    n_unknowns() const override
+    {
+      return dofs.n_dofs();
+    }
+
+    Errors
+    errors(const double t) const override;
+
+    /** `pressure` (p_K), `darcy_velocity_x`, `_y` (, `_z`) per polytope. */
+    PatchData<dim, dim>
+    matrix_output() const override;
+
+    /** `fracture_pressure`, `fracture_flux_x`, ... (flux per width),
+     * `aperture` per fracture face. */
+    PatchData<dim - 1, dim>
+    fracture_output() const override;
+
+  private:
+    const Parameters               &prm;
+    const LevelDiscretization<dim> &discretization;
+    /** The fracture edges of the network. */
+    const FractureEdges<dim> edges;
+    /** The pressure unknowns. */
+    const PressureDoFMap<dim> dofs;
+    /** The operator. */
+    const Flow<dim> flow;
+    /** The state: the pressures at the last time reached. */
+    Vector<double> pressure;
+  };
+} // namespace PolyFrac
+
+#endif

@@ -1,0 +1,139 @@
+#ifndef polyfrac_app_mechanics_models_h
+#define polyfrac_app_mechanics_models_h
+
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/model.h>
+#include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/mechanical_state.h>
+
+#include <memory>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * Model = elasticity: the bubble-VEM elasticity operator (Elasticity) with
+   * the prescribed fracture load, solved once (a static model); its state
+   * is the displacement and the prescribed traction.
+   */
+  template <int dim>
+  class ElasticityModel : public Model<dim>
+  {
+  public:
+    /** Assembles the operator of @p prm on @p discretization (both must
+     * outlive the model). */
+    ElasticityModel(const Parameters               &prm,
+                    const LevelDiscretization<dim> &discretization);
+
+    bool
+    is_time_dependent() const override
+    {
+      return false;
+    }
+
+    /** Solves; prints the CG iterations when the solver is AMG. */
+    StepReport
+    step(const double t_old, const double t_new, std::ostream &out) override;
+
+    types::global_dof_index
+    n_unknowns() const override
+    {
+      return elasticity.n_unknowns();
+    }
+
+    Errors
+    errors(const double t) const override;
+
+    PatchData<dim, dim>
+    matrix_output() const override;
+
+    PatchData<dim - 1, dim>
+    fracture_output() const override;
+
+  private:
+    const Parameters               &prm;
+    const LevelDiscretization<dim> &discretization;
+    /** The operator. */
+    Elasticity<dim> elasticity;
+    /** The solution. */
+    MechanicalState<dim> state;
+  };
+
+
+
+  /**
+   * Model = contact mechanics: the contact problem (ContactMechanics) with
+   * its load steps, solved once (a static model); its state is the
+   * displacement, the multipliers and the contact states. It hands its
+   * multipliers and states to the next level (MultiplierField, used when
+   * Nonlinear solver/Initial guess = previous level) and reports the
+   * largest opening after the step.
+   */
+  template <int dim>
+  class ContactMechanicsModel : public Model<dim>
+  {
+  public:
+    /** Assembles the contact problem of @p prm on @p discretization (both
+     * must outlive the model). */
+    ContactMechanicsModel(const Parameters               &prm,
+                          const LevelDiscretization<dim> &discretization);
+
+    bool
+    is_time_dependent() const override
+    {
+      return false;
+    }
+
+    /** Starts Newton from the multipliers of the coarser level when
+     * Nonlinear solver/Initial guess = previous level. */
+    void
+    start_from(const LevelStart &coarser) override;
+
+    /** The converged multipliers and states. */
+    std::shared_ptr<const LevelStart>
+    level_start() const override;
+
+    /** Runs the load steps; prints the Newton iterations. */
+    StepReport
+    step(const double t_old, const double t_new, std::ostream &out) override;
+
+    /** Prints the largest opening (and the exact one there, if known). */
+    void
+    print_step_summary(std::ostream &out) const override;
+
+    types::global_dof_index
+    n_unknowns() const override
+    {
+      return contact.n_unknowns();
+    }
+
+    Errors
+    errors(const double t) const override;
+
+    PatchData<dim, dim>
+    matrix_output() const override;
+
+    PatchData<dim - 1, dim>
+    fracture_output() const override;
+
+  private:
+    const Parameters               &prm;
+    const LevelDiscretization<dim> &discretization;
+    /** The operator and its semi-smooth Newton solver. */
+    ContactMechanics<dim> contact;
+    /** The solution. */
+    MechanicalState<dim> state;
+  };
+
+
+
+  /** The model Model/Model of @p prm names, on @p discretization. */
+  template <int dim>
+  std::unique_ptr<Model<dim>>
+  make_model(const Parameters               &prm,
+             const LevelDiscretization<dim> &discretization);
+} // namespace PolyFrac
+
+#endif

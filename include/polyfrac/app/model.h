@@ -1,0 +1,144 @@
+#ifndef polyfrac_app_model_h
+#define polyfrac_app_model_h
+
+#include <deal.II/base/types.h>
+
+#include <polyfrac/io/vtu_writer.h>
+#include <polyfrac/postprocessing/error_evaluator.h>
+
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * What one step t^{n−1} → t^n of a Model did: whether it converged (and,
+   * if not, what it tried), its iteration counts, and the figures of the
+   * step that `time_series-level-K.csv` records (each left empty by a model
+   * that has no such quantity).
+   */
+  struct StepReport
+  {
+    /** Whether the step converged; the state is unchanged if not. */
+    bool converged = true;
+    /** What failed and what was tried, when the step did not converge. */
+    std::string failure;
+    /** Fixed-point iterations of a coupled step. */
+    std::optional<unsigned int> coupling_iterations;
+    /** Newton iterations of the step (summed over coupling iterations). */
+    std::optional<unsigned int> newton_iterations;
+    /** Fracture faces open at the end of the step. */
+    std::optional<unsigned int> n_open;
+    /** Fracture faces in stick at the end of the step. */
+    std::optional<unsigned int> n_stick;
+    /** Fracture faces in slip at the end of the step. */
+    std::optional<unsigned int> n_slip;
+    /** Mean fracture aperture d_f (area-weighted). */
+    std::optional<double> mean_aperture;
+    /** Mean fracture pressure p_f (area-weighted). */
+    std::optional<double> mean_fracture_pressure;
+    /** The residual of the discrete energy balance of the step. */
+    std::optional<double> energy_residual;
+  };
+
+  /**
+   * What a converged level hands to the model of the next level (nested
+   * iteration), opaque to the driver: each model defines its own.
+   */
+  struct LevelStart
+  {
+    /** Virtual, so that models can define and recover their own. */
+    virtual ~LevelStart() = default;
+  };
+
+  /**
+   * A model of the physics of a scene on one discretisation (elasticity,
+   * contact mechanics, flow, poromechanics), as the driver (Simulator)
+   * sees it: the driver knows no physics, it asks the model. The model owns
+   * its operators and its state, kept apart: a step starts from the state
+   * of the previous step and, when it fails, leaves that state untouched so
+   * that the driver can retry with a smaller step.
+   *
+   * A static model (is_time_dependent() false) is asked for one step.
+   */
+  template <int dim>
+  class Model
+  {
+  public:
+    /** Virtual: models are held through this interface. */
+    virtual ~Model() = default;
+
+    /** Whether the model evolves in time (implicit Euler steps from t = 0
+     * to Time/End time); a static model takes one step. */
+    virtual bool
+    is_time_dependent() const = 0;
+
+    /** Starts from what the model of the coarser level handed over
+     * (level_start()); the default ignores it. */
+    virtual void
+    start_from(const LevelStart &coarser);
+
+    /** What this level hands to the next one, or nothing (the default). */
+    virtual std::shared_ptr<const LevelStart>
+    level_start() const;
+
+    /**
+     * One step from the current state at @p t_old to @p t_new (both 0 for
+     * a static model); prints its progress to @p out. On failure the
+     * report says so and the state stays that of @p t_old.
+     */
+    virtual StepReport
+    step(const double t_old, const double t_new, std::ostream &out) = 0;
+
+    /** Prints what the model reports after a step besides the errors
+     * (e.g. the largest opening); the default prints nothing. */
+    virtual void
+    print_step_summary(std::ostream &out) const;
+
+    /** Unknowns of the model's linear systems. */
+    virtual types::global_dof_index
+    n_unknowns() const = 0;
+
+    /** The errors of the current state against the exact fields at time
+     * @p t (doc/scheme.md §8). */
+    virtual Errors
+    errors(const double t) const = 0;
+
+    /** The matrix output of the current state: one patch per deal.II cell. */
+    virtual PatchData<dim, dim>
+    matrix_output() const = 0;
+
+    /** The fracture output of the current state: one patch per fracture
+     * face (or its fan pieces). */
+    virtual PatchData<dim - 1, dim>
+    fracture_output() const = 0;
+  };
+
+
+  template <int dim>
+  inline void
+  Model<dim>::start_from(const LevelStart &)
+  {}
+
+
+
+  template <int dim>
+  inline std::shared_ptr<const LevelStart>
+  Model<dim>::level_start() const
+  {
+    return nullptr;
+  }
+
+
+
+  template <int dim>
+  inline void
+  Model<dim>::print_step_summary(std::ostream &) const
+  {}
+} // namespace PolyFrac
+
+#endif

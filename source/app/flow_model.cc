@@ -1,0 +1,145 @@
+#include <polyfrac/app/flow_model.h>
+
+#include <iomanip>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    const char *const components[] = {"_x", "_y", "_z"};
+
+    /** One ScalarField per component of @p vectors, named @p name_x, ... */
+    template <int dim>
+    std::vector<ScalarField>
+    component_fields(const std::string                 &name,
+                     const std::vector<Tensor<1, dim>> &vectors)
+    {
+      std::vector<ScalarField> fields(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          fields[d].name = name + components[d];
+          for (const Tensor<1, dim> &v : vectors)
+            fields[d].values.push_back(v[d]);
+        }
+      return fields;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  FlowModel<dim>::FlowModel(const Parameters               &prm,
+                            const LevelDiscretization<dim> &discretization)
+    : prm(prm)
+    , discretization(discretization)
+    , edges(*discretization.geometry, *discretization.network)
+    , dofs(*discretization.mesh, *discretization.network, edges)
+    , flow(prm, *discretization.geometry, *discretization.network, edges, dofs)
+    , pressure(flow.initial_pressure())
+  {}
+
+
+
+  template <int dim>
+  StepReport
+  FlowModel<dim>::step(const double  t_old,
+                       const double  t_new,
+                       std::ostream &out)
+  {
+    const FlowStepData   data       = flow.flow_step_data(t_new, t_new - t_old);
+    const Vector<double> previous   = pressure;
+    const unsigned int   iterations = flow.solve_step(data, previous, pressure);
+    if (prm.solver.method == "AMG")
+      out << "CG iterations: " << iterations << std::endl;
+    // The largest residual of a cell or fracture face balance relative to
+    // its largest term: round-off with UMFPACK, about the CG tolerance with
+    // AMG.
+    out << "Flow step to t = " << t_new << ": mass balance residual "
+        << std::setprecision(2)
+        << flow.mass_balance_residual(data, previous, pressure)
+        << std::setprecision(6) << std::endl;
+
+    StepReport  report;
+    const auto &network  = *discretization.network;
+    const auto &geometry = *discretization.geometry;
+    if (network.n_fracture_faces() > 0)
+      {
+        double                    area = 0, aperture = 0, p_f = 0;
+        const std::vector<double> fracture_p =
+          flow.fracture_pressures(pressure);
+        for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+          {
+            const double measure =
+              geometry.faces[network.fracture_faces[i].face].measure;
+            area += measure;
+            aperture += measure * data.apertures[i];
+            p_f += measure * fracture_p[i];
+          }
+        report.mean_aperture          = aperture / area;
+        report.mean_fracture_pressure = p_f / area;
+      }
+    return report;
+  }
+
+
+
+  template <int dim>
+  Errors
+  FlowModel<dim>::errors(const double t) const
+  {
+    Errors errors;
+    add_pressure_errors(prm,
+                        *discretization.geometry,
+                        *discretization.network,
+                        flow,
+                        pressure,
+                        t,
+                        errors);
+    return errors;
+  }
+
+
+
+  template <int dim>
+  PatchData<dim, dim>
+  FlowModel<dim>::matrix_output() const
+  {
+    std::vector<ScalarField> fields = {
+      {"pressure", flow.cell_pressures(pressure)}};
+    for (auto &field : component_fields<dim>("darcy_velocity",
+                                             flow.darcy_velocities(pressure)))
+      fields.push_back(field);
+    return matrix_patches<dim>(*discretization.geometry,
+                               *discretization.network,
+                               *discretization.dofs,
+                               nullptr,
+                               nullptr,
+                               fields);
+  }
+
+
+
+  template <int dim>
+  PatchData<dim - 1, dim>
+  FlowModel<dim>::fracture_output() const
+  {
+    const std::vector<double> apertures = flow.flow_step_data(0, 1).apertures;
+    std::vector<ScalarField>  fields    = {
+          {"fracture_pressure", flow.fracture_pressures(pressure)}};
+    for (auto &field :
+         component_fields<dim>("fracture_flux",
+                               flow.fracture_velocities(apertures, pressure)))
+      fields.push_back(field);
+    fields.push_back({"aperture", apertures});
+    return fracture_patches<dim>(*discretization.geometry,
+                                 *discretization.network,
+                                 *discretization.dofs,
+                                 nullptr,
+                                 fields);
+  }
+
+
+
+  template class FlowModel<2>;
+  template class FlowModel<3>;
+} // namespace PolyFrac

@@ -1,0 +1,153 @@
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/mesh_builder.h>
+#include <polyfrac/mesh/gmsh_reader.h>
+
+#include <algorithm>
+#include <map>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    template <int dim>
+    std::vector<Fracture<dim>>
+    fractures_from(const Parameters &prm)
+    {
+      std::vector<Fracture<dim>> fractures;
+      for (const auto &points3 : prm.fractures.geometries)
+        {
+          std::vector<Point<dim>> points;
+          for (const Point<3> &p : points3)
+            {
+              Point<dim> q;
+              for (unsigned int d = 0; d < dim; ++d)
+                q[d] = p[d];
+              points.push_back(q);
+            }
+          fractures.emplace_back(points);
+        }
+      return fractures;
+    }
+
+    /**
+     * The faces of @p mesh that the fracture elements of @p gmsh_mesh are,
+     * matched by their sorted vertex sets (the vertex indices of the
+     * triangulation are kept by the polytopal mesh, its distortion and its
+     * agglomeration), each with its fracture and n^+.
+     */
+    template <int dim>
+    std::vector<typename FractureNetwork<dim>::TaggedFace>
+    tagged_faces(const GmshMesh<dim> &gmsh_mesh, const PolytopalMesh<dim> &mesh)
+    {
+      std::map<std::vector<unsigned int>, unsigned int> face_of_vertices;
+      for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+        {
+          std::vector<unsigned int> key = mesh.faces[f].vertices;
+          std::sort(key.begin(), key.end());
+          face_of_vertices.emplace(key, f);
+        }
+      std::vector<typename FractureNetwork<dim>::TaggedFace> faces;
+      for (const auto &element : gmsh_mesh.fracture_elements)
+        {
+          std::vector<unsigned int> key = element.vertices;
+          std::sort(key.begin(), key.end());
+          const auto it = face_of_vertices.find(key);
+          AssertThrow(it != face_of_vertices.end(),
+                      ExcMessage(
+                        "An element of the fracture " +
+                        gmsh_mesh.fracture_names[element.fracture] +
+                        " is not a face of the mesh: embed the fracture "
+                        "in the gmsh geometry (Curve{..} In Surface{..}; or "
+                        "Surface{..} In Volume{..};)."));
+          faces.push_back({it->second, element.fracture, element.normal});
+        }
+      return faces;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  LevelDiscretization<dim>::LevelDiscretization(const Parameters  &prm,
+                                                const unsigned int level)
+  {
+    // The fractures are either planar Fracture objects located
+    // geometrically (generated box) or the tagged elements of a gmsh mesh.
+    const bool                       from_gmsh = prm.mesh.source == "gmsh";
+    const std::vector<Fracture<dim>> fractures = fractures_from<dim>(prm);
+    GmshMesh<dim>                    gmsh_mesh;
+    if (from_gmsh)
+      {
+        AssertThrow(fractures.empty(),
+                    ExcMessage(
+                      (prm.file_name.empty() ? std::string() :
+                                               "In <" + prm.file_name + ">: ") +
+                      "Fractures/" + (dim == 2 ? "Segments" : "Polygons") +
+                      " cannot be combined with Mesh/Source = gmsh: "
+                      "give the fractures as physical groups of the "
+                      "mesh and list them in Fractures/Gmsh physical "
+                      "tags."));
+        gmsh_mesh =
+          read_gmsh(prm, prm.mesh.global_refinements + level, triangulation);
+      }
+    else
+      {
+        MeshBuilder::make_box(prm, level, triangulation);
+        MeshBuilder::refine_in_box(prm, triangulation);
+      }
+    mesh = std::make_unique<PolytopalMesh<dim>>(
+      PolytopalMesh<dim>::from_triangulation(triangulation));
+
+    // gmsh fractures are not planar Fracture objects: their vertices stay.
+    std::vector<bool> fixed_vertices(mesh->vertices.size(), false);
+    for (const auto &element : gmsh_mesh.fracture_elements)
+      for (const unsigned int v : element.vertices)
+        fixed_vertices[v] = true;
+    MeshBuilder::distort(prm, fractures, fixed_vertices, *mesh);
+
+    const auto make_network = [&](const MeshGeometry<dim> &mesh_geometry) {
+      return from_gmsh ?
+               std::make_unique<FractureNetwork<dim>>(
+                 gmsh_mesh.fracture_names,
+                 tagged_faces(gmsh_mesh, mesh_geometry.mesh),
+                 mesh_geometry) :
+               std::make_unique<FractureNetwork<dim>>(fractures, mesh_geometry);
+    };
+
+    if (prm.mesh.cells_per_polytope > 1)
+      {
+        const MeshGeometry<dim> fine_geometry(*mesh);
+        const auto              fine_network = make_network(fine_geometry);
+        std::vector<bool>       fracture_face(mesh->n_faces(), false);
+        for (const auto &ff : fine_network->fracture_faces)
+          fracture_face[ff.face] = true;
+        mesh = std::make_unique<PolytopalMesh<dim>>(
+          MeshBuilder::agglomerate(prm, fracture_face, *mesh));
+      }
+
+    geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
+    network  = make_network(*geometry);
+    dofs     = std::make_unique<DoFMap<dim>>(*mesh, *network);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelDiscretization<dim>::print_summary(std::ostream &out) const
+  {
+    geometry->print_quality(out);
+    network->print(out);
+    out << "Node sides: " << dofs->n_node_sides() << " (vertices with";
+    const std::vector<unsigned int> histogram = dofs->node_side_histogram();
+    for (unsigned int k = 1; k < histogram.size(); ++k)
+      if (histogram[k] > 0)
+        out << ' ' << k << " side" << (k > 1 ? "s: " : ": ") << histogram[k];
+    out << "); bubbles: " << dofs->n_bubbles() << std::endl;
+  }
+
+
+
+  template class LevelDiscretization<2>;
+  template class LevelDiscretization<3>;
+} // namespace PolyFrac
