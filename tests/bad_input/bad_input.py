@@ -42,6 +42,7 @@ BASE_3D = BASE_2D.replace("set Dimension = 2", "set Dimension = 3").replace(
 
 SEGMENT = "subsection Fractures\n  set Segments = 0, -0.5 : 0, 0.5\nend\n"
 CONTACT = "subsection Model\n  set Model = contact mechanics\nend\n"
+FLOW = "subsection Model\n  set Model = flow\nend\n"
 
 
 def section(name, **entries):
@@ -295,6 +296,29 @@ CASES = {
         "`Lame mu = 0`",
         ["<Lame mu> must be > 0, not 0.000000"],
         files={"scene.prm": section("Material", Lame_mu="0")}),
+    # Flow.
+    "flow_zero_viscosity": case(
+        "`Model = flow`, `Flow/Viscosity = 0`",
+        ["subsection <Flow>", "<Viscosity> must be > 0 (Pa s), not 0"],
+        files={"scene.prm": FLOW + section("Flow", Viscosity="0")}),
+    "flow_negative_permeability": case(
+        "`Model = flow`, `Flow/Permeability = x - 2` (negative in the box)",
+        ["Flow/Permeability is", "< 0 at the point",
+         "a permeability must be >= 0"],
+        files={"scene.prm": FLOW + section("Flow", Permeability="x - 2")},
+        stage="level"),
+    "flow_pressure_and_flux_id": case(
+        "`Flow/Pressure boundary ids = 0` and `Flux boundary ids = 0, 1`",
+        ["subsection <Flow>", "boundary id 0 is both a Pressure and a Flux "
+         "boundary id"],
+        files={"scene.prm": FLOW + section("Flow", Pressure_boundary_ids="0",
+                                           Flux_boundary_ids="0, 1")}),
+    "flow_unknown_pressure_id": case(
+        "`Model = flow`, `Flow/Pressure boundary ids = 7`",
+        ["Flow/Pressure boundary ids lists the id 7",
+         "which no boundary face of the mesh carries"],
+        files={"scene.prm": FLOW + section("Flow", Pressure_boundary_ids="7")},
+        stage="level"),
 }
 
 
