@@ -1,4 +1,5 @@
 #include <polyfrac/app/flow_model.h>
+#include <polyfrac/app/poromechanics_model.h>
 #include <polyfrac/app/mechanics_models.h>
 
 #include <iomanip>
@@ -206,6 +207,8 @@ namespace PolyFrac
       return std::make_unique<ContactMechanicsModel<dim>>(prm, discretization);
     if (prm.model == "flow")
       return std::make_unique<FlowModel<dim>>(prm, discretization);
+    if (prm.model == "poromechanics")
+      return std::make_unique<PoromechanicsModel<dim>>(prm, discretization);
     AssertThrow(prm.model == "elasticity",
                 ExcMessage("Model = " + prm.model +
                            " has no implementation in this build."));

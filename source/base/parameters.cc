@@ -644,6 +644,19 @@ namespace PolyFrac
       "states of the previous level (those of the nearest face centroid on "
       "the same fracture; its multipliers give the slip directions): nested "
       "iteration. zero: every level starts from u = 0, λ = 0.");
+    prm.declare_entry(
+      "Coupling tolerance",
+      "1e-8",
+      Patterns::Double(0),
+      "Model = poromechanics: the fixed-stress iterations of a time step "
+      "stop when max|Δu|/max|u| + max|Δp|/max|p| (increments of one "
+      "iteration) is below this.");
+    prm.declare_entry("Maximum coupling iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Model = poromechanics: fixed-stress iterations per "
+                      "time step before the step counts as failed (it is "
+                      "then halved and retried).");
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");
@@ -1011,6 +1024,9 @@ namespace PolyFrac
     nonlinear.max_iterations = prm->get_integer("Maximum iterations");
     nonlinear.tolerance      = prm->get_double("Tolerance");
     nonlinear.initial_guess  = prm->get("Initial guess");
+    nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
+    nonlinear.max_coupling_iterations =
+      prm->get_integer("Maximum coupling iterations");
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
@@ -1045,10 +1061,6 @@ namespace PolyFrac
 
     warn_unused_entries();
     check_expressions();
-    AssertThrow(model != "poromechanics" || file_name.empty(),
-                ExcMessage("In <" + file_name + ">: Model = " + model +
-                           " is not available in this version of PolyFrac; "
-                           "use elasticity, contact mechanics or flow."));
   }
 
 

@@ -384,43 +384,6 @@ namespace PolyFrac
 
 
   template <int dim>
-  Vector<double>
-  Elasticity<dim>::pressure_load(
-    const std::vector<double> &cell_pressure,
-    const double               biot_coefficient,
-    const std::vector<double> &fracture_pressure) const
-  {
-    Vector<double> load(dofs.n_displacement_dofs());
-    // Σ_K |K| b p_K div_K v: div_K v = Σ_t v_t · G_t (the gradient
-    // coefficients of the local unknowns t).
-    for (unsigned int c = 0; c < cell_pressure.size(); ++c)
-      {
-        const LocalReconstruction<dim> local(geometry, dofs, network, c);
-        const auto                     local_dofs = dofs.cell_dofs(c);
-        const double                   factor =
-          local.measure * biot_coefficient * cell_pressure[c];
-        for (unsigned int t = 0; t < local.n_local(); ++t)
-          for (unsigned int d = 0; d < dim; ++d)
-            load(local_dofs[dim * t + d]) +=
-              factor * local.gradient_coefficients[t][d];
-      }
-    // − Σ_σ |σ| p_{f,σ} [[v]]_σ·n^+.
-    for (unsigned int i = 0; i < fracture_pressure.size(); ++i)
-      {
-        const Tensor<1, dim> n = network.normal(i);
-        const double         factor =
-          -geometry.faces[network.fracture_faces[i].face].measure *
-          fracture_pressure[i];
-        for (const auto &[block, w] : jump(geometry, dofs, network, i))
-          for (unsigned int d = 0; d < dim; ++d)
-            load(dim * block + d) += factor * w * n[d];
-      }
-    return load;
-  }
-
-
-
-  template <int dim>
   Tensor<2, dim>
   Elasticity<dim>::stress(const Tensor<2, dim> &gradient) const
   {

@@ -108,7 +108,8 @@ namespace PolyFrac
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
-                 const MechanicalState<dim> &state)
+                 const MechanicalState<dim> &state,
+                 const double                time)
   {
     Errors errors;
     if (!prm.exact.displacement.empty())
@@ -117,6 +118,7 @@ namespace PolyFrac
                                                 prm.exact.displacement,
                                                 dim,
                                                 prm.constants);
+        exact->set_time(time);
         double     e_u = 0, n_u = 0, e_grad = 0, n_grad = 0;
         Vector<double>              u(dim);
         std::vector<Tensor<1, dim>> grad_u(dim);
@@ -145,6 +147,7 @@ namespace PolyFrac
     if (!prm.exact.displacement_jump.empty())
       {
         const auto exact = exact_jump<dim>(prm);
+        exact->set_time(time);
         const auto sums  = fracture_face_errors<dim>(
           *exact, geometry, network, [&](const unsigned int i) {
             return state.jump_value(geometry, dofs, network, i);
@@ -158,6 +161,7 @@ namespace PolyFrac
                                prm.exact.contact_traction,
                                dim,
                                prm.constants);
+        exact->set_time(time);
         // err_lambda_hm12 weighs each face by h_σ and divides by diam(Ω):
         // a computable surrogate of the H^{-1/2}(Γ) error.
         const auto corners =
@@ -265,13 +269,15 @@ namespace PolyFrac
                  const MeshGeometry<2> &,
                  const FractureNetwork<2> &,
                  const DoFMap<2> &,
-                 const MechanicalState<2> &);
+                 const MechanicalState<2> &,
+                 const double);
   template Errors
   compute_errors(const Parameters &,
                  const MeshGeometry<3> &,
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
-                 const MechanicalState<3> &);
+                 const MechanicalState<3> &,
+                 const double);
   template void
   add_pressure_errors(const Parameters &,
                       const MeshGeometry<2> &,

@@ -80,8 +80,6 @@ main(int argc, char **argv)
   check(
     "no_dirichlet",
     "subsection Boundary conditions\n  set Neumann boundary ids = 0, 1, 2, 3\nend\n");
-  check("unavailable_model",
-        "subsection Model\n  set Model = poromechanics\nend\n");
   check("bad_fracture",
         "subsection Fractures\n  set Segments = 0, 0 : 1, 1 : 2, 2\nend\n");
   check("missing_file_itself", "", false);

@@ -4,7 +4,7 @@
 // (the interior face means cancel; the bubble completes the jump). Hence a
 // uniform matrix pressure p with the fracture pressure p_f = b p loads the
 // displacement exactly like the traction −b p n on the boundary:
-// Elasticity::pressure_load(p, b, b p) = b p Σ_{σ∈∂Ω} |σ| v̄_{Kσ}·n_{Kσ}.
+// BiotCoupling::pressure_load(p, b, b p) = b p Σ_{σ∈∂Ω} |σ| v̄_{Kσ}·n_{Kσ}.
 // Asserted to round-off on quadrilaterals/hexahedra and simplices, with two
 // crossing fractures (tips at the boundary, an X intersection).
 
@@ -12,6 +12,7 @@
 
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/discretization/local_reconstruction.h>
+#include <polyfrac/physics/biot_coupling.h>
 
 #include "../tests.h"
 
@@ -26,10 +27,10 @@ check(const std::string &cell_type)
   Testing::add_crossing_fractures(prm, dim);
   const LevelDiscretization<dim> level(prm, 0);
   const auto                    &geometry = *level.geometry;
-  const Elasticity<dim> elasticity(prm, geometry, *level.network, *level.dofs);
+  const BiotCoupling<dim> coupling(geometry, *level.network, *level.dofs);
 
   const double         p = 3, b = 0.7;
-  const Vector<double> load = elasticity.pressure_load(
+  const Vector<double> load = coupling.pressure_load(
     std::vector<double>(geometry.mesh.n_cells(), p),
     b,
     std::vector<double>(level.network->n_fracture_faces(), b * p));

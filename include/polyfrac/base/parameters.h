@@ -265,6 +265,10 @@ namespace PolyFrac
       double tolerance;
       /** "previous level" (nested iteration) or "zero". */
       std::string initial_guess;
+      /** Coupling tolerance of the fixed-stress iterations. */
+      double coupling_tolerance;
+      /** Maximum coupling iterations per time step. */
+      unsigned int max_coupling_iterations;
     } nonlinear; /**< The subsection Nonlinear solver. */
 
     /** Linear solver. */

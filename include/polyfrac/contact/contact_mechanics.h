@@ -113,7 +113,7 @@ namespace PolyFrac
 
     /**
      * The loads and Dirichlet data at time @p t, plus @p additional_load on
-     * the displacement unknowns (e.g. Elasticity::pressure_load() of a
+     * the displacement unknowns (e.g. BiotCoupling::pressure_load() of a
      * coupled step), for the next solve(); the operator is unchanged.
      */
     void

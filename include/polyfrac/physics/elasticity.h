@@ -60,7 +60,7 @@ namespace PolyFrac
 
     /**
      * Solves with the assembled load plus @p additional_load (e.g. the
-     * pressure_load() of a coupled step; empty: none), zero on the
+     * BiotCoupling::pressure_load() of a coupled step; empty: none), zero on the
      * Dirichlet dofs; writes the displacement and the prescribed fracture
      * traction (as the multipliers) to @p state. The UMFPACK factorisation
      * is kept for the next solve until assemble() is called again. Returns
@@ -78,21 +78,6 @@ namespace PolyFrac
     void
     set_time(const double t);
 
-    /**
-     * The load of the pressures on the displacement unknowns (doc/scheme.md
-     * §5, moved to the right-hand side):
-     *
-     *   Σ_K |K| b p_K div_K v − Σ_{σ∈F_Γ} |σ| p_{f,σ} [[v]]_σ·n^+,
-     *
-     * with @p cell_pressure p_K per polytope (empty: none), the Biot
-     * coefficient @p biot_coefficient, and @p fracture_pressure p_{f,σ} per
-     * fracture face (empty: none). Unconstrained: one entry per
-     * displacement dof.
-     */
-    Vector<double>
-    pressure_load(const std::vector<double> &cell_pressure,
-                  const double               biot_coefficient,
-                  const std::vector<double> &fracture_pressure) const;
 
     /** Unknowns of the linear system: displacement dofs not fixed by Dirichlet
      * data. */

@@ -66,14 +66,15 @@ namespace PolyFrac
   error_columns();
 
   /** The Errors of the mechanical @p state against the exact fields of
-   * @p prm. */
+   * @p prm at time @p time. */
   template <int dim>
   Errors
   compute_errors(const Parameters           &prm,
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
-                 const MechanicalState<dim> &state);
+                 const MechanicalState<dim> &state,
+                 const double                time = 0);
 
   /**
    * Sets err_pressure and err_fracture_pressure of @p errors (doc/scheme.md

@@ -1,0 +1,131 @@
+#ifndef polyfrac_app_poromechanics_model_h
+#define polyfrac_app_poromechanics_model_h
+
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/model.h>
+#include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/dofs/pressure_dof_map.h>
+#include <polyfrac/fractures/fracture_edges.h>
+#include <polyfrac/physics/biot_coupling.h>
+#include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/mechanical_state.h>
+
+#include <memory>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * Model = poromechanics (doc/scheme.md §1, §5, §7): the bubble-VEM
+   * mechanics with Biot coupling and, on the fractures, contact with
+   * friction and the fracture pressure, coupled to the HFV flow in the
+   * matrix and the fractures, by implicit Euler steps. Porosity
+   * φ = φ^0 + b div(u − u^0) + (p_m − p_m^0)/M, aperture d_f = d_0 − [u]_n in
+   * the cubic law, with the same discrete divergence and jump as the
+   * momentum equation (BiotCoupling).
+   *
+   * Each step is solved by the fixed-stress fixed point (Mikelić–Wheeler):
+   * flow with the mechanics of the last iterate and the relaxation
+   * L (p^{k+1} − p^k) in the cells, L = b²/K_dr with K_dr = λ + 2μ/d, and
+   * a_σ (p_f^{k+1} − p_f^k) on the fracture faces, a_σ the opening of face
+   * σ under a unit pressure in all fractures with every face free (a
+   * probe of the elastic operator, once per level: an upper bound of the
+   * compliance of a face in contact); then mechanics (Elasticity, or
+   * ContactMechanics with the Coulomb slip increment from the start of the
+   * step) under the new pressures. The iterations stop when
+   * max|Δu|/max|u| + max|Δp|/max|p| ≤ Nonlinear solver/Coupling tolerance;
+   * a step that reaches Maximum coupling iterations, or whose contact solve
+   * fails, reports failure with the state unchanged (the driver halves it).
+   */
+  template <int dim>
+  class PoromechanicsModel : public Model<dim>
+  {
+  public:
+    /** The coupled problem of @p prm on @p discretization (both must outlive
+     * the model): assembles the operators, probes the fracture compliance
+     * and sets the initial state (u = 0, p = Flow/Initial pressure). */
+    PoromechanicsModel(const Parameters               &prm,
+                       const LevelDiscretization<dim> &discretization);
+
+    bool
+    is_time_dependent() const override
+    {
+      return true;
+    }
+
+    /** One implicit Euler step by fixed-stress iterations; prints one line
+     * per step. */
+    StepReport
+    step(const double t_old, const double t_new, std::ostream &out) override;
+
+    types::global_dof_index
+    n_unknowns() const override;
+
+    Errors
+    errors(const double t) const override;
+
+    PatchData<dim, dim>
+    matrix_output() const override;
+
+    PatchData<dim - 1, dim>
+    fracture_output() const override;
+
+  private:
+    /** a_σ: the opening per unit fracture pressure of each face (probe). */
+    std::vector<double>
+    fracture_compliance();
+
+    /**
+     * The flow step data of the fixed-stress iteration from @p start
+     * (u^{n−1}, with pressures @p p_start) at the iterate @p u_k, @p p_k.
+     */
+    FlowStepData
+    fixed_stress_data(const double                t,
+                      const double                time_step,
+                      const MechanicalState<dim> &start,
+                      const Vector<double>       &p_start,
+                      const MechanicalState<dim> &u_k,
+                      const Vector<double>       &p_k) const;
+
+    /** The mechanics at time @p t under the pressures @p p, from the state
+     * @p start of the step; returns the Newton iterations (contact). */
+    unsigned int
+    solve_mechanics(const double                t,
+                    const Vector<double>       &p,
+                    const MechanicalState<dim> &start,
+                    MechanicalState<dim>       &result);
+
+    /** The apertures d_0 − [[u]]_n of @p u per fracture face. */
+    std::vector<double>
+    apertures(const MechanicalState<dim> &u) const;
+
+    const Parameters               &prm;
+    const LevelDiscretization<dim> &discretization;
+    FractureEdges<dim>              edges;
+    PressureDoFMap<dim>             pressure_dofs;
+    Flow<dim>                       flow;
+    BiotCoupling<dim>               coupling;
+    /** The elasticity operator (the mechanics without fractures, and the
+     * compliance probe). */
+    Elasticity<dim> elasticity;
+    /** Contact mechanics, when the scene has fractures. */
+    std::unique_ptr<ContactMechanics<dim>> contact;
+    /** L = b²/(λ + 2μ/d). */
+    const double fixed_stress_coefficient;
+    /** a_σ per fracture face. */
+    std::vector<double> fracture_relaxation;
+    /** The state: displacement, multipliers, contact states. */
+    MechanicalState<dim> state;
+    /** The state: pressures (PressureDoFMap numbering). */
+    Vector<double> pressure;
+    /** p_m^0 per cell, for the porosity. */
+    std::vector<double> initial_cell_pressure;
+  };
+} // namespace PolyFrac
+
+#endif

@@ -1,0 +1,356 @@
+#include <polyfrac/app/poromechanics_model.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    /** max_k |a_k − b_k| / max(max_k |a_k|, tiny): a relative increment. */
+    double
+    relative_increment(const Vector<double> &a, const Vector<double> &b)
+    {
+      Vector<double> difference = a;
+      difference -= b;
+      const double scale = a.linfty_norm();
+      return scale > 0 ? difference.linfty_norm() / scale :
+                         difference.linfty_norm();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  PoromechanicsModel<dim>::PoromechanicsModel(
+    const Parameters               &prm,
+    const LevelDiscretization<dim> &discretization)
+    : prm(prm)
+    , discretization(discretization)
+    , edges(*discretization.geometry, *discretization.network)
+    , pressure_dofs(*discretization.mesh, *discretization.network, edges)
+    , flow(prm,
+           *discretization.geometry,
+           *discretization.network,
+           edges,
+           pressure_dofs)
+    , coupling(*discretization.geometry,
+               *discretization.network,
+               *discretization.dofs)
+    , elasticity(prm,
+                 *discretization.geometry,
+                 *discretization.network,
+                 *discretization.dofs)
+    , fixed_stress_coefficient(
+        std::pow(prm.flow.biot_coefficient, 2) /
+        (prm.lame_lambda + 2 * prm.lame_mu / dim))
+    , pressure(flow.initial_pressure())
+    , initial_cell_pressure(flow.cell_pressures(pressure))
+  {
+    elasticity.set_time(0);
+    elasticity.assemble();
+    if (discretization.network->n_fracture_faces() > 0)
+      {
+        contact = std::make_unique<ContactMechanics<dim>>(
+          prm,
+          *discretization.geometry,
+          *discretization.network,
+          *discretization.dofs);
+        fracture_relaxation = fracture_compliance();
+      }
+    state.displacement.reinit(discretization.dofs->n_displacement_dofs());
+    state.multipliers.resize(discretization.network->n_fracture_faces());
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  PoromechanicsModel<dim>::fracture_compliance()
+  {
+    // The response to a unit pressure in every fracture, all faces free:
+    // the difference of two solves with the same (linear) operator.
+    MechanicalState<dim> loaded, unloaded;
+    elasticity.solve(unloaded);
+    elasticity.solve(
+      loaded,
+      coupling.pressure_load(
+        {}, 0., std::vector<double>(discretization.network->n_fracture_faces(), 1.)));
+    Vector<double> response = loaded.displacement;
+    response -= unloaded.displacement;
+    std::vector<double> opening = coupling.normal_jumps(response);
+    for (double &a : opening)
+      a = std::max(-a, 0.);
+    return opening;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  PoromechanicsModel<dim>::apertures(const MechanicalState<dim> &u) const
+  {
+    std::vector<double> d = coupling.normal_jumps(u.displacement);
+    for (double &value : d)
+      value = prm.flow.aperture_at_contact - value;
+    return d;
+  }
+
+
+
+  template <int dim>
+  FlowStepData
+  PoromechanicsModel<dim>::fixed_stress_data(
+    const double                t,
+    const double                time_step,
+    const MechanicalState<dim> &start,
+    const Vector<double>       &p_start,
+    const MechanicalState<dim> &u_k,
+    const Vector<double>       &p_k) const
+  {
+    FlowStepData data = flow.flow_step_data(t, time_step);
+    const double b    = prm.flow.biot_coefficient;
+    const double L    = fixed_stress_coefficient;
+
+    // Cells: |K| [(1/M)(p − p^{n−1}) + b div_K(u^k − u^{n−1})
+    //             + L (p − p^k)] / Δt + fluxes = |K| h_m.
+    const std::vector<double> volume_k = coupling.volume_changes(u_k.displacement);
+    const std::vector<double> volume_0 =
+      coupling.volume_changes(start.displacement);
+    const std::vector<double> pk = flow.cell_pressures(p_k);
+    const std::vector<double> p0 = flow.cell_pressures(p_start);
+    for (unsigned int c = 0; c < data.storage.size(); ++c)
+      {
+        const double measure = discretization.geometry->cells[c].measure;
+        data.storage[c] += L;
+        data.cell_rhs[c] =
+          (L * (pk[c] - p0[c]) - b * (volume_k[c] - volume_0[c]) / measure) /
+          time_step;
+      }
+
+    // Fracture faces: |σ| [(d^k − d^{n−1}) + a_σ (p_f − p_f^k)] / Δt
+    //                 + fluxes − exchange = |σ| h_f.
+    const std::vector<double> d_k    = apertures(u_k);
+    const std::vector<double> d_0    = apertures(start);
+    const std::vector<double> pf_k   = flow.fracture_pressures(p_k);
+    const std::vector<double> pf_0   = flow.fracture_pressures(p_start);
+    for (unsigned int i = 0; i < d_k.size(); ++i)
+      {
+        data.apertures[i]        = d_k[i];
+        data.fracture_storage[i] = fracture_relaxation[i];
+        data.fracture_rhs[i] =
+          (fracture_relaxation[i] * (pf_k[i] - pf_0[i]) - (d_k[i] - d_0[i])) /
+          time_step;
+      }
+    return data;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  PoromechanicsModel<dim>::solve_mechanics(const double                t,
+                                           const Vector<double>       &p,
+                                           const MechanicalState<dim> &start,
+                                           MechanicalState<dim>       &result)
+  {
+    const Vector<double> load =
+      coupling.pressure_load(flow.cell_pressures(p),
+                             prm.flow.biot_coefficient,
+                             flow.fracture_pressures(p));
+    if (!contact)
+      {
+        elasticity.solve(result, load);
+        return 0;
+      }
+    contact->set_loads(t, load);
+    const unsigned int before = contact->n_newton_iterations();
+    std::ostringstream log;
+    result = start;
+    contact->solve(result, log);
+    return contact->n_newton_iterations() - before;
+  }
+
+
+
+  template <int dim>
+  StepReport
+  PoromechanicsModel<dim>::step(const double  t_old,
+                                const double  t_new,
+                                std::ostream &out)
+  {
+    const double time_step = t_new - t_old;
+    if (!contact)
+      {
+        // Loads and Dirichlet data at t^n: reassembled once per step.
+        elasticity.set_time(t_new);
+        elasticity.assemble();
+      }
+
+    StepReport           report;
+    report.coupling_iterations = 0;
+    report.newton_iterations   = 0;
+    MechanicalState<dim> u_k = state;
+    Vector<double>       p_k = pressure;
+    double               increment = 0;
+    try
+      {
+        for (unsigned int k = 1; k <= prm.nonlinear.max_coupling_iterations;
+             ++k)
+          {
+            const FlowStepData data =
+              fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
+            Vector<double> p_next;
+            flow.solve_step(data, pressure, p_next);
+            MechanicalState<dim> u_next;
+            *report.newton_iterations +=
+              solve_mechanics(t_new, p_next, state, u_next);
+            increment =
+              relative_increment(u_next.displacement, u_k.displacement) +
+              relative_increment(p_next, p_k);
+            u_k                         = u_next;
+            p_k                         = p_next;
+            report.coupling_iterations = k;
+            if (increment <= prm.nonlinear.coupling_tolerance)
+              break;
+          }
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream what;
+        e.print_info(what);
+        report.converged = false;
+        report.failure   = "the contact solve failed in fixed-stress "
+                         "iteration " +
+                         std::to_string(*report.coupling_iterations + 1) +
+                         ": " + what.str();
+        return report;
+      }
+    if (increment > prm.nonlinear.coupling_tolerance)
+      {
+        std::ostringstream what;
+        what << "the fixed-stress iterations did not converge in "
+             << prm.nonlinear.max_coupling_iterations
+             << " iterations (last relative increment " << increment
+             << ", Nonlinear solver/Coupling tolerance "
+             << prm.nonlinear.coupling_tolerance << ").";
+        report.converged = false;
+        report.failure   = what.str();
+        return report;
+      }
+
+    state    = u_k;
+    pressure = p_k;
+    out << "Step to t = " << t_new << ": " << *report.coupling_iterations
+        << " coupling iterations";
+    if (contact)
+      out << ", " << *report.newton_iterations << " Newton iterations";
+    out << std::endl;
+
+    const auto &network  = *discretization.network;
+    const auto &geometry = *discretization.geometry;
+    if (network.n_fracture_faces() > 0)
+      {
+        report.n_open = report.n_stick = report.n_slip = 0;
+        for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+          {
+            *report.n_open += state.contact.normal[i] == NormalState::open;
+            *report.n_stick +=
+              state.contact.tangential[i] == TangentialState::stick;
+            *report.n_slip +=
+              state.contact.tangential[i] == TangentialState::slip;
+          }
+        const std::vector<double> d   = apertures(state);
+        const std::vector<double> p_f = flow.fracture_pressures(pressure);
+        double                    area = 0, aperture = 0, mean_p = 0;
+        for (unsigned int i = 0; i < d.size(); ++i)
+          {
+            const double measure =
+              geometry.faces[network.fracture_faces[i].face].measure;
+            area += measure;
+            aperture += measure * d[i];
+            mean_p += measure * p_f[i];
+          }
+        report.mean_aperture          = aperture / area;
+        report.mean_fracture_pressure = mean_p / area;
+      }
+    return report;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  PoromechanicsModel<dim>::n_unknowns() const
+  {
+    return (contact ? contact->n_unknowns() : elasticity.n_unknowns()) +
+           pressure_dofs.n_dofs();
+  }
+
+
+
+  template <int dim>
+  Errors
+  PoromechanicsModel<dim>::errors(const double t) const
+  {
+    Errors errors = compute_errors(prm,
+                                   *discretization.geometry,
+                                   *discretization.network,
+                                   *discretization.dofs,
+                                   state,
+                                   t);
+    add_pressure_errors(prm,
+                        *discretization.geometry,
+                        *discretization.network,
+                        flow,
+                        pressure,
+                        t,
+                        errors);
+    return errors;
+  }
+
+
+
+  template <int dim>
+  PatchData<dim, dim>
+  PoromechanicsModel<dim>::matrix_output() const
+  {
+    const std::vector<double> p      = flow.cell_pressures(pressure);
+    const std::vector<double> volume = coupling.volume_changes(state.displacement);
+    std::vector<double>       porosity(p.size());
+    for (unsigned int c = 0; c < p.size(); ++c)
+      porosity[c] = prm.flow.initial_porosity +
+                    prm.flow.biot_coefficient * volume[c] /
+                      discretization.geometry->cells[c].measure +
+                    (p[c] - initial_cell_pressure[c]) *
+                      prm.flow.inverse_biot_modulus;
+    return matrix_patches<dim>(*discretization.geometry,
+                               *discretization.network,
+                               *discretization.dofs,
+                               &elasticity,
+                               &state,
+                               {{"pressure", p}, {"porosity", porosity}});
+  }
+
+
+
+  template <int dim>
+  PatchData<dim - 1, dim>
+  PoromechanicsModel<dim>::fracture_output() const
+  {
+    return fracture_patches<dim>(
+      *discretization.geometry,
+      *discretization.network,
+      *discretization.dofs,
+      &state,
+      {{"fracture_pressure", flow.fracture_pressures(pressure)},
+       {"aperture", apertures(state)}});
+  }
+
+
+
+  template class PoromechanicsModel<2>;
+  template class PoromechanicsModel<3>;
+} // namespace PolyFrac
