@@ -194,6 +194,23 @@ namespace PolyFrac
       double analytic_load;
     } exact; /**< The subsection Exact solution. */
 
+    /**
+     * PLACEHOLDER for the Flow subsection of the flow branch (drop this
+     * commit at merge): only the members the analytic solutions read, with
+     * the defaults of issue 8; no entries are declared or read.
+     */
+    struct FlowData
+    {
+      /** Flow/Permeability: matrix permeability k (m², expression). */
+      std::string permeability = "1e-15";
+      /** Flow/Viscosity: η (Pa s). */
+      double viscosity = 1e-3;
+      /** Flow/Biot coefficient: b. */
+      double biot_coefficient = 0.5;
+      /** Flow/Inverse Biot modulus: 1/M (1/Pa), 0 allowed. */
+      double inverse_biot_modulus = 1e-10;
+    } flow; /**< PLACEHOLDER of the subsection Flow. */
+
     /** Convergence study/Number of refinement levels. */
     unsigned int n_refinement_levels;
 
