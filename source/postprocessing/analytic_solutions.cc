@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 
+#include <polyfrac/base/expressions.h>
 #include <polyfrac/postprocessing/analytic_solutions.h>
 
 #include <cmath>
@@ -556,6 +557,90 @@ namespace PolyFrac
     for (unsigned int d = 0; d < dim; ++d)
       result[d] = g[component][d];
     return result;
+  }
+
+
+
+  namespace
+  {
+    /** The value of the scalar expression @p expression of @p entry at
+     * the corners and the centre of the box of @p prm at t = 0; throws
+     * unless it is the same everywhere. */
+    template <int dim>
+    double
+    constant_value(const Parameters  &prm,
+                   const std::string &entry,
+                   const std::string &expression)
+    {
+      const auto function =
+        make_expression<dim>(entry, expression, 1, prm.constants);
+      Point<dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = prm.mesh.lower_left[d];
+          upper[d] = prm.mesh.upper_right[d];
+        }
+      const double value = function->value(0.5 * (lower + upper));
+      for (unsigned int corner = 0; corner < (1u << dim); ++corner)
+        {
+          Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = (corner >> d) & 1 ? upper[d] : lower[d];
+          AssertThrow(std::abs(function->value(x) - value) <=
+                        1e-12 * std::abs(value),
+                      ExcMessage("In <" + prm.file_name + ">: Exact solution/" +
+                                 "Analytic solution needs a constant " + entry +
+                                 ", not <" + expression + ">."));
+        }
+      return value;
+    }
+  } // namespace
+
+
+
+  PoroelasticData
+  poroelastic_data(const Parameters &prm)
+  {
+    const std::string entry = "Flow/Permeability";
+    const double      permeability =
+      prm.dim == 2 ? constant_value<2>(prm, entry, prm.flow.permeability) :
+                          constant_value<3>(prm, entry, prm.flow.permeability);
+    AssertThrow(permeability > 0 && prm.flow.viscosity > 0,
+                ExcMessage("In <" + prm.file_name +
+                           ">: Exact solution/Analytic solution needs "
+                           "Flow/Permeability > 0 and Flow/Viscosity > 0."));
+    return {prm.lame_lambda,
+            prm.lame_mu,
+            prm.flow.biot_coefficient,
+            prm.flow.inverse_biot_modulus,
+            permeability / prm.flow.viscosity};
+  }
+
+
+
+  std::shared_ptr<const PoroelasticSolution>
+  make_analytic_solution(const Parameters &prm)
+  {
+    const std::string &name = prm.exact.analytic_solution;
+    if (name == "none")
+      return nullptr;
+    const Point<3> &lower = prm.mesh.lower_left, &upper = prm.mesh.upper_right;
+    const unsigned int vertical = prm.dim - 1;
+    if (name == "terzaghi")
+      return std::make_shared<Terzaghi>(poroelastic_data(prm),
+                                        upper[vertical] - lower[vertical],
+                                        prm.exact.analytic_load,
+                                        lower[vertical],
+                                        vertical);
+    AssertThrow(name == "mandel" && prm.dim == 2,
+                ExcMessage("Analytic solution <" + name +
+                           "> is not available in dimension " +
+                           std::to_string(prm.dim) + "."));
+    return std::make_shared<Mandel>(poroelastic_data(prm),
+                                    upper[0] - lower[0],
+                                    upper[1] - lower[1],
+                                    prm.exact.analytic_load,
+                                    Point<2>(lower[0], lower[1]));
   }
 
 

@@ -6,6 +6,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
+#include <polyfrac/base/parameters.h>
+
 #include <memory>
 #include <vector>
 
@@ -238,6 +240,34 @@ namespace PolyFrac
     /** The first roots, computed once. */
     std::vector<double> roots;
   };
+
+  /**
+   * The poroelastic data of a scene: Material/Lame lambda and Lame mu,
+   * Flow/Biot coefficient and Inverse Biot modulus, and the mobility
+   * Flow/Permeability over Flow/Viscosity. The analytic solutions need a
+   * constant permeability: its expression is evaluated at t = 0 at the
+   * corners and the centre of the Mesh box and must take one value there.
+   */
+  PoroelasticData
+  poroelastic_data(const Parameters &prm);
+
+  /**
+   * The solution Exact solution/Analytic solution of @p prm, nullptr for
+   * none, with the data of poroelastic_data() and the load Exact
+   * solution/Analytic load, on the box of Mesh/Lower left and Upper right
+   * corner: Terzaghi's column along the last coordinate from the lower
+   * corner, Mandel's quarter with its symmetry axes through the lower
+   * corner (a = width, b = height).
+   *
+   * @code
+   *   const auto solution = make_analytic_solution(prm);
+   *   AnalyticPressure<dim>     pressure(solution);
+   *   AnalyticDisplacement<dim> displacement(solution);
+   *   displacement.set_time(t);   // Dirichlet data and exact u at t
+   * @endcode
+   */
+  std::shared_ptr<const PoroelasticSolution>
+  make_analytic_solution(const Parameters &prm);
 
   /**
    * The pressure of a PoroelasticSolution as a deal.II Function (one
