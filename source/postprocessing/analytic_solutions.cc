@@ -119,24 +119,35 @@ namespace PolyFrac
 
 
 
+  Terzaghi::Sums
+  Terzaghi::sums(const double zeta, const double t) const
+  {
+    const unsigned int n = n_terms(t);
+    check_time(t, n, "Terzaghi");
+    const double k = numbers::PI / (2 * height);
+    const double c = consolidation_coefficient();
+    Sums         s;
+    for (unsigned int i = n; i >= 1; --i)
+      {
+        const double m = 2. * i - 1;
+        const double E =
+          (i % 2 == 1 ? 1. : -1.) * std::exp(-m * m * k * k * c * t);
+        s.cos_over_m += E / m * std::cos(m * k * zeta);
+        s.sin += E * std::sin(m * k * zeta);
+        s.sin_over_m2 += E / (m * m) * std::sin(m * k * zeta);
+      }
+    return s;
+  }
+
+
+
   double
   Terzaghi::pressure(const Point<3> &x, const double t) const
   {
     if (t == 0)
       return undrained_pressure();
-    const unsigned int n = n_terms(t);
-    check_time(t, n, "Terzaghi");
-    const double zeta = height_above_bottom(x);
-    const double k    = numbers::PI / (2 * height);
-    const double c    = consolidation_coefficient();
-    double       sum  = 0;
-    for (unsigned int i = n; i >= 1; --i)
-      {
-        const double m = 2. * i - 1;
-        sum += (i % 2 == 1 ? 1. : -1.) / m * std::cos(m * k * zeta) *
-               std::exp(-m * m * k * k * c * t);
-      }
-    return 4 * undrained_pressure() / numbers::PI * sum;
+    return 4 * undrained_pressure() / numbers::PI *
+           sums(height_above_bottom(x), t).cos_over_m;
   }
 
 
@@ -147,20 +158,9 @@ namespace PolyFrac
     Tensor<1, 3> gradient;
     if (t == 0)
       return gradient;
-    const unsigned int n = n_terms(t);
-    check_time(t, n, "Terzaghi");
-    const double zeta = height_above_bottom(x);
-    const double k    = numbers::PI / (2 * height);
-    const double c    = consolidation_coefficient();
-    double       sum  = 0;
-    for (unsigned int i = n; i >= 1; --i)
-      {
-        const double m = 2. * i - 1;
-        sum += (i % 2 == 1 ? 1. : -1.) * std::sin(m * k * zeta) *
-               std::exp(-m * m * k * k * c * t);
-      }
-    // d/dz of (4 p0/π)(1/m) cos(m k ζ) is −(4 p0 k/π) sin(m k ζ).
-    gradient[vertical_axis] = -4 * undrained_pressure() * k / numbers::PI * sum;
+    // d/dz of (4 p0/π)(1/m) cos(m k ζ) is −(4 p0 k/π) sin(m k ζ), k = π/(2h).
+    gradient[vertical_axis] =
+      -2 * undrained_pressure() / height * sums(height_above_bottom(x), t).sin;
     return gradient;
   }
 
@@ -179,19 +179,9 @@ namespace PolyFrac
           (b * undrained_pressure() - load) * zeta / constrained_modulus;
         return u;
       }
-    const unsigned int n = n_terms(t);
-    check_time(t, n, "Terzaghi");
-    const double k   = numbers::PI / (2 * height);
-    const double c   = consolidation_coefficient();
-    double       sum = 0;
-    for (unsigned int i = n; i >= 1; --i)
-      {
-        const double m = 2. * i - 1;
-        sum += (i % 2 == 1 ? 1. : -1.) / (m * m) * std::sin(m * k * zeta) *
-               std::exp(-m * m * k * k * c * t);
-      }
     u[vertical_axis] = (-load * zeta + 8 * b * undrained_pressure() * height /
-                                         (numbers::PI * numbers::PI) * sum) /
+                                         (numbers::PI * numbers::PI) *
+                                         sums(zeta, t).sin_over_m2) /
                        constrained_modulus;
     return u;
   }

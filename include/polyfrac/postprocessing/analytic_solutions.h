@@ -121,6 +121,18 @@ namespace PolyFrac
     displacement_gradient(const Point<3> &x, const double t) const override;
 
   private:
+    /** The sums of the series at ζ and t > 0, over m = 2n − 1 with the
+     * signs (−1)^{n−1} E_m(t): Σ cos(m k ζ)/m, Σ sin(m k ζ),
+     * Σ sin(m k ζ)/m², k = π/(2h). */
+    struct Sums
+    {
+      double cos_over_m = 0, sin = 0, sin_over_m2 = 0;
+    };
+
+    /** The series of the solution at height ζ and t > 0. */
+    Sums
+    sums(const double zeta, const double t) const;
+
     /** ζ = z − z_0 of the point @p x. */
     double
     height_above_bottom(const Point<3> &x) const;
