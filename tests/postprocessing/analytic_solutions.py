@@ -57,7 +57,7 @@ def mandel(t, x, y, lam=1.65e9, mu=2.475e9, alpha=1.0, M=1.65e10,
 
 
 def terzaghi(t, z, lam=1.65e9, mu=1.475e9, alpha=1.0, inverse_M=0.0,
-             mobility=9.869e-14 / 1e-3, h=1.0, q=6e8):
+             mobility=9.86e-14 / 1e-3, h=1.0, q=6e8):
     K_v = lam + 2 * mu
     c = mobility * K_v / (K_v * inverse_M + alpha**2)
     p0 = alpha * q / (K_v * inverse_M + alpha**2)
