@@ -443,6 +443,26 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Total stress times outward normal on the Neumann faces, "
                       "global components.");
+    prm.declare_entry(
+      "Dirichlet components",
+      "",
+      Patterns::Anything(),
+      "Rollers: <id: components; ...>, e.g. <0: x; 2: y> fixes only the x "
+      "component on boundary id 0 and only y on id 2 (components x, y, z, "
+      "comma separated); the free components are traction-free. A "
+      "Dirichlet id not listed fixes all components.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial stress");
+    prm.declare_entry(
+      "Stress",
+      "0",
+      Patterns::Anything(),
+      "In-situ effective stress sigma0 (symmetric), dim x dim expressions "
+      "row by row separated by ';' (e.g. <-2; 0.5; 0.5; -1> in 2D), or 0. "
+      "The momentum balance gains -sum_K |K| sigma0(centroid):eps_K(v): "
+      "with the traction sigma0 n on the Neumann boundary, u = 0 and the "
+      "fractures carry lambda = -sigma0 n+.");
     prm.leave_subsection();
 
     prm.enter_subsection("Exact solution");
@@ -470,6 +490,24 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Exact fracture pressure p_f, an expression in x, y (, "
                       "z), t (adds err_fracture_pressure).");
+    prm.declare_entry(
+      "Analytic solution",
+      "none",
+      Patterns::Selection("none|terzaghi|mandel"),
+      "A built-in poroelastic solution (Model = poromechanics, on the box "
+      "of Mesh/Lower left and Upper right corner), the exact solution and "
+      "the Dirichlet data on the Dirichlet ids. terzaghi: the column along "
+      "the last coordinate, bottom fixed and impermeable, top drained and "
+      "loaded. mandel (Dimension = 2): the quarter [x0, x0 + a] x [y0, y0 "
+      "+ b] of Mandel's slab, rollers at x0 and y0, x0 + a drained and free, "
+      "a rigid plate on top.");
+    prm.declare_entry("Analytic load",
+                      "0",
+                      Patterns::Double(),
+                      "The load of the analytic solution, compressive when "
+                      "positive: terzaghi: the traction q on the top (Pa); "
+                      "mandel: the force F per unit length on the plate over "
+                      "the half-width a (N/m).");
     prm.leave_subsection();
 
     prm.enter_subsection("Convergence study");
@@ -793,16 +831,23 @@ namespace PolyFrac
 
   std::string
   Parameters::checked_vector_expression(const std::string &entry,
-                                        const std::string &expression) const
+                                        const std::string &expression,
+                                        const unsigned int n_components) const
   {
-    const std::string trimmed = Utilities::trim(expression);
+    const unsigned int expected = n_components == 0 ? dim : n_components;
+    const std::string  trimmed  = Utilities::trim(expression);
     if (trimmed == "0")
-      return zero_vector(dim);
+      {
+        std::string zeros = "0";
+        for (unsigned int i = 1; i < expected; ++i)
+          zeros += "; 0";
+        return zeros;
+      }
     const unsigned int n = Utilities::split_string_list(trimmed, ';').size();
-    AssertThrow(n == dim,
+    AssertThrow(n == expected,
                 ExcMessage("In <" + file_name + ">: entry <" + entry +
                            "> has " + std::to_string(n) +
-                           " components, expected " + std::to_string(dim) +
+                           " components, expected " + std::to_string(expected) +
                            " separated by ';' (or the single value 0)."));
     return trimmed;
   }
@@ -931,6 +976,13 @@ namespace PolyFrac
     boundary.neumann_traction =
       checked_vector_expression("Boundary conditions/Neumann traction",
                                 prm->get("Neumann traction"));
+    read_dirichlet_components(prm->get("Dirichlet components"));
+    prm->leave_subsection();
+
+    prm->enter_subsection("Initial stress");
+    initial_stress = checked_vector_expression("Initial stress/Stress",
+                                               prm->get("Stress"),
+                                               dim * dim);
     prm->leave_subsection();
 
     prm->enter_subsection("Exact solution");
@@ -951,7 +1003,10 @@ namespace PolyFrac
                                   exact.contact_traction);
     exact.matrix_pressure   = prm->get("Matrix pressure");
     exact.fracture_pressure = prm->get("Fracture pressure");
+    exact.analytic_solution = prm->get("Analytic solution");
+    exact.analytic_load     = prm->get_double("Analytic load");
     prm->leave_subsection();
+    check_analytic_solution();
 
     prm->enter_subsection("Convergence study");
     n_refinement_levels = prm->get_integer("Number of refinement levels");
@@ -970,7 +1025,9 @@ namespace PolyFrac
             column.find("lambda") != std::string::npos ?
                                    exact.contact_traction :
                                    exact.displacement;
-          AssertThrow(!field.empty(),
+          const bool analytic = exact.analytic_solution != "none" &&
+                                (column == "err_u" || column == "err_grad_u");
+          AssertThrow(!field.empty() || analytic,
                       ExcMessage("In <" + file_name +
                                  ">: Convergence study checks " + column +
                                  ", but its exact field is not given in "
@@ -1146,6 +1203,109 @@ namespace PolyFrac
 
 
   void
+  Parameters::read_dirichlet_components(const std::string &text)
+  {
+    const std::string where = "In <" + file_name +
+                              ">, entry <Boundary conditions/Dirichlet " +
+                              "components>: ";
+    const std::string letters = dim == 2 ? "xy" : "xyz";
+    boundary.dirichlet_components.clear();
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        if (item.empty())
+          continue;
+        const std::vector<std::string> parts =
+          Utilities::split_string_list(item, ':');
+        AssertThrow(parts.size() == 2 && !parts[1].empty(),
+                    ExcMessage(where + "<" + item +
+                               "> must read <id: components>, e.g. <0: x; "
+                               "2: y> (rollers) or <4: x, y>."));
+        int id = -1;
+        try
+          {
+            id = Utilities::string_to_int(parts[0]);
+          }
+        catch (...)
+          {}
+        AssertThrow(id >= 0 && id <= 255,
+                    ExcMessage(where + "<" + parts[0] +
+                               "> is not a boundary id (an integer from 0 to "
+                               "255)."));
+        AssertThrow(boundary.dirichlet_components.count(id) == 0,
+                    ExcMessage(where + "the boundary id " + std::to_string(id) +
+                               " is listed twice: give all its components in "
+                               "one item, e.g. <" +
+                               std::to_string(id) + ": x, y>."));
+        const auto listed = [id](const std::vector<unsigned> &ids) {
+          return std::find(ids.begin(), ids.end(), id) != ids.end();
+        };
+        AssertThrow(boundary.dirichlet_ids.empty() ?
+                      !listed(boundary.neumann_ids) :
+                      listed(boundary.dirichlet_ids),
+                    ExcMessage(where + "the boundary id " + std::to_string(id) +
+                               " is not a Dirichlet id (see Dirichlet boundary "
+                               "ids and Neumann boundary ids): add it to "
+                               "Dirichlet boundary ids or remove it here."));
+        std::vector<bool> fixed(dim, false);
+        for (const std::string &c : Utilities::split_string_list(parts[1], ','))
+          {
+            const std::size_t d = letters.find(c);
+            AssertThrow(c.size() == 1 && d != std::string::npos,
+                        ExcMessage(where + "<" + c + "> (boundary id " +
+                                   std::to_string(id) +
+                                   ") is not a component: use " +
+                                   (dim == 2 ? "x or y" : "x, y or z") +
+                                   ", comma separated."));
+            AssertThrow(!fixed[d],
+                        ExcMessage(where + "the component " + c +
+                                   " of boundary id " + std::to_string(id) +
+                                   " is listed twice."));
+            fixed[d] = true;
+          }
+        boundary.dirichlet_components[id] = fixed;
+      }
+  }
+
+
+
+  void
+  Parameters::check_analytic_solution() const
+  {
+    const std::string &name = exact.analytic_solution;
+    if (name == "none")
+      return;
+    const std::string where = "In <" + file_name +
+                              ">, Exact solution/Analytic solution = " + name +
+                              ": ";
+    AssertThrow(model == "poromechanics",
+                ExcMessage(where + "a poroelastic solution needs Model/Model "
+                                   "= poromechanics."));
+    AssertThrow(name != "mandel" || dim == 2,
+                ExcMessage(where + "Mandel's problem is plane strain: set "
+                                   "Dimension = 2."));
+    AssertThrow(mesh.source == "hyper rectangle",
+                ExcMessage(where + "the solution lives on the box of "
+                                   "Mesh/Lower left corner and Upper right "
+                                   "corner: set Mesh/Source = hyper "
+                                   "rectangle."));
+    AssertThrow(exact.displacement.empty(),
+                ExcMessage(where + "it gives the exact displacement: leave "
+                                   "Exact solution/Displacement empty."));
+    AssertThrow(exact.analytic_load != 0,
+                ExcMessage(where +
+                           "set Exact solution/Analytic load, the "
+                           "compressive load (" +
+                           (name == "terzaghi" ?
+                              std::string("Terzaghi: the traction q on the "
+                                          "top, in Pa") :
+                              std::string("Mandel: the force F per unit "
+                                          "length on the plate, in N/m")) +
+                           "), to a non-zero value."));
+  }
+
+
+
+  void
   Parameters::check_lame_coefficients() const
   {
     const std::string where = "In <" + file_name + ">, subsection <Material>: ";
@@ -1184,6 +1344,7 @@ namespace PolyFrac
          dim},
         {"Fractures/Pressure", fractures.pressure, 1},
         {"Fractures/Traction", fractures.traction, dim},
+        {"Initial stress/Stress", initial_stress, dim * dim},
         {"Contact/Tresca threshold", contact.tresca_threshold, 1},
         {"Exact solution/Displacement", exact.displacement, dim},
         {"Exact solution/Displacement jump", exact.displacement_jump, dim},

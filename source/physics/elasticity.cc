@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <memory>
 #include <set>
+#include <sstream>
 
 namespace PolyFrac
 {
@@ -45,6 +46,10 @@ namespace PolyFrac
                                     prm.fractures.traction,
                                     dim,
                                     prm.constants))
+    , initial_stress(make_expression<dim>("Initial stress/Stress",
+                                          prm.initial_stress,
+                                          dim * dim,
+                                          prm.constants))
   {}
 
 
@@ -65,28 +70,42 @@ namespace PolyFrac
 
     check_boundary_ids();
     constraints.clear();
-    bool has_dirichlet_face = false;
+    // The components each Dirichlet face fixes (Dirichlet components; all
+    // when its id is not listed there), and which are fixed anywhere.
+    const std::vector<bool> all(dim, true);
+    std::vector<bool>       fixed_somewhere(dim, false);
+    bool                    has_dirichlet_face = false;
     for (const auto &face : mesh.faces)
       if (face.at_boundary() && is_dirichlet(face.boundary_id))
         {
-          has_dirichlet_face   = true;
+          has_dirichlet_face = true;
+          const auto listed  = ids.dirichlet_components.find(face.boundary_id);
+          const std::vector<bool> &fixed =
+            listed == ids.dirichlet_components.end() ? all : listed->second;
           const unsigned int c = face.cells[0];
           for (const unsigned int v : face.vertices)
             {
               const unsigned int side =
                 dofs.node_side(c, geometry.local_vertex(c, v));
-              if (constraints.is_constrained(dofs.node_side_dof(side, 0)))
+              bool missing = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                missing |= fixed[d] && !constraints.is_constrained(
+                                         dofs.node_side_dof(side, d));
+              if (!missing)
                 continue;
               const Vector<double> value =
                 side_limit(*dirichlet,
                            mesh.vertices[v],
                            geometry.cells[c].centroid);
               for (unsigned int d = 0; d < dim; ++d)
-                {
-                  constraints.add_line(dofs.node_side_dof(side, d));
-                  constraints.set_inhomogeneity(dofs.node_side_dof(side, d),
-                                                value[d]);
-                }
+                if (fixed[d] &&
+                    !constraints.is_constrained(dofs.node_side_dof(side, d)))
+                  {
+                    fixed_somewhere[d] = true;
+                    constraints.add_line(dofs.node_side_dof(side, d));
+                    constraints.set_inhomogeneity(dofs.node_side_dof(side, d),
+                                                  value[d]);
+                  }
             }
         }
     AssertThrow(has_dirichlet_face,
@@ -95,6 +114,14 @@ namespace PolyFrac
                            "are free. Set Boundary conditions/Dirichlet "
                            "boundary ids (or leave it empty and list fewer "
                            "Neumann ids)."));
+    for (unsigned int d = 0; d < dim; ++d)
+      AssertThrow(fixed_somewhere[d],
+                  ExcMessage("In <" + prm.file_name +
+                             ">: no Dirichlet boundary face fixes the " +
+                             std::string(1, "xyz"[d]) +
+                             " component, so rigid motions are free: fix it "
+                             "on some Dirichlet id (Boundary "
+                             "conditions/Dirichlet components)."));
     constraints.close();
   }
 
@@ -126,6 +153,10 @@ namespace PolyFrac
     };
     check("Dirichlet boundary ids", prm.boundary.dirichlet_ids);
     check("Neumann boundary ids", prm.boundary.neumann_ids);
+    std::vector<unsigned> roller_ids;
+    for (const auto &[id, components] : prm.boundary.dirichlet_components)
+      roller_ids.push_back(id);
+    check("Dirichlet components", roller_ids);
   }
 
 
@@ -298,6 +329,13 @@ namespace PolyFrac
               b(dim * t + d) += f(d) * phi;
           }
       }
+    // In-situ stress: −|K| σ0(x̄_K):ε_K(v) = −|K| Σ_ij σ0_ij ∂_j v_i.
+    const Tensor<2, dim> sigma0 =
+      initial_stress_value(geometry.cells[cell].centroid);
+    for (unsigned int t = 0; t < local.n_local(); ++t)
+      for (unsigned int d = 0; d < dim; ++d)
+        b(dim * t + d) -=
+          local.measure * (sigma0[d] * local.gradient_coefficients[t]);
     return b;
   }
 
@@ -318,6 +356,33 @@ namespace PolyFrac
     AffineConstraints<double> none;
     none.close();
     assemble_face_loads(none, system_rhs, false);
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  Elasticity<dim>::initial_stress_value(const Point<dim> &x) const
+  {
+    Vector<double> value(dim * dim);
+    initial_stress->vector_value(x, value);
+    Tensor<2, dim> sigma0;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        sigma0[i][j] = value(dim * i + j);
+    if ((sigma0 - transpose(sigma0)).norm() > 1e-12 * sigma0.norm())
+      {
+        std::ostringstream where;
+        where << x << ": " << sigma0;
+        AssertThrow(false,
+                    ExcMessage("In <" + prm.file_name +
+                               ">: Initial stress/Stress is not symmetric at " +
+                               where.str() +
+                               " (rows separated like the entries); a stress "
+                               "is symmetric: give the same expression to "
+                               "the entries ij and ji."));
+      }
+    return sigma0;
   }
 
 
@@ -377,7 +442,12 @@ namespace PolyFrac
   Elasticity<dim>::set_time(const double t)
   {
     for (auto *function :
-         {&body_force, &dirichlet, &neumann, &fracture_pressure, &traction})
+         {&body_force,
+          &dirichlet,
+          &neumann,
+          &fracture_pressure,
+          &traction,
+          &initial_stress})
       (*function)->set_time(t);
   }
 

@@ -221,6 +221,107 @@ CASES = {
         files={"scene.prm": section("Boundary conditions",
                                     Dirichlet_boundary_ids="0, 9")},
         stage="level"),
+    # Rollers: Boundary conditions/Dirichlet components.
+    "dirichlet_components_malformed": case(
+        "`Dirichlet components = 0 x` (no colon)",
+        ["entry <Boundary conditions/Dirichlet components>: <0 x> must read "
+         "<id: components>, e.g. <0: x; 2: y>"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_components="0 x")}),
+    "dirichlet_components_unknown_component": case(
+        "`Dirichlet components = 0: z` in 2D",
+        ["<z> (boundary id 0) is not a component: use x or y"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_components="0: z")}),
+    "dirichlet_components_twice": case(
+        "`Dirichlet components = 0: x; 0: y`",
+        ["the boundary id 0 is listed twice: give all its components in one "
+         "item, e.g. <0: x, y>"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_components="0: x; 0: y")}),
+    "dirichlet_components_not_dirichlet": case(
+        "`Dirichlet components = 1: x` with `Neumann boundary ids = 1`",
+        ["the boundary id 1 is not a Dirichlet id",
+         "add it to Dirichlet boundary ids or remove it here"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Neumann_boundary_ids="1",
+                                    Dirichlet_components="1: x")}),
+    "dirichlet_components_id_unknown": case(
+        "`Dirichlet components = 6: x` on a box (ids 0 to 3), Dirichlet "
+        "boundary ids empty (all ids not Neumann)",
+        ["Boundary conditions/Dirichlet components lists the id 6, which no "
+         "boundary face of the mesh carries"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_components="6: x")},
+        stage="level"),
+    "dirichlet_components_free_rigid_motion": case(
+        "rollers fixing only x everywhere (y translation free)",
+        ["no Dirichlet boundary face fixes the y component, so rigid motions "
+         "are free: fix it on some Dirichlet id"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_boundary_ids="0, 1",
+                                    Dirichlet_components="0: x; 1: x")},
+        stage="level"),
+    # Initial stress.
+    "initial_stress_components": case(
+        "`Initial stress/Stress = -1; 0; -1` in 2D (3 of 4 entries)",
+        ["entry <Initial stress/Stress> has 3 components, expected 4"],
+        files={"scene.prm": section("Initial stress", Stress="-1; 0; -1")}),
+    "initial_stress_does_not_parse": case(
+        "`Initial stress/Stress = -1; 0; 0; foo`",
+        ["Entry <Initial stress/Stress>: cannot parse"],
+        files={"scene.prm": section("Initial stress",
+                                    Stress="-1; 0; 0; foo")}),
+    "initial_stress_not_symmetric": case(
+        "`Initial stress/Stress = -1; 0.5; 0; -1` (not symmetric)",
+        ["Initial stress/Stress is not symmetric at",
+         "give the same expression to the entries ij and ji"],
+        files={"scene.prm": section("Initial stress",
+                                    Stress="-1; 0.5; 0; -1")},
+        stage="level"),
+    "initial_stress_not_finite": case(
+        "`Initial stress/Stress = sqrt(x - 2); 0; 0; sqrt(x - 2)`",
+        ["Entry <Initial stress/Stress> is not finite"],
+        files={"scene.prm": section("Mesh", Subdivisions="3, 3") + section(
+            "Initial stress", Stress="sqrt(x - 2); 0; 0; sqrt(x - 2)")},
+        stage="level"),
+    # Analytic solutions.
+    "analytic_solution_needs_poromechanics": case(
+        "`Analytic solution = terzaghi` with Model = elasticity",
+        ["Exact solution/Analytic solution = terzaghi: a poroelastic "
+         "solution needs Model/Model = poromechanics"],
+        files={"scene.prm": section("Exact solution",
+                                    Analytic_solution="terzaghi",
+                                    Analytic_load="1")}),
+    "analytic_solution_mandel_3d": case(
+        "`Analytic solution = mandel` in 3D",
+        ["Mandel's problem is plane strain: set Dimension = 2"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Exact solution", Analytic_solution="mandel",
+            Analytic_load="6e8")},
+        base=BASE_3D),
+    "analytic_solution_gmsh": case(
+        "`Analytic solution = terzaghi` on a gmsh mesh",
+        ["the solution lives on the box of Mesh/Lower left corner and Upper "
+         "right corner: set Mesh/Source = hyper rectangle"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Mesh", Source="gmsh", File_name="box.msh") + section(
+            "Exact solution", Analytic_solution="terzaghi",
+            Analytic_load="1"), "box.msh": "$MeshFormat\n"}),
+    "analytic_solution_and_displacement": case(
+        "`Analytic solution = terzaghi` and an exact Displacement",
+        ["it gives the exact displacement: leave Exact solution/Displacement "
+         "empty"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Exact solution", Analytic_solution="terzaghi",
+            Analytic_load="1", Displacement="x; y")}),
+    "analytic_solution_without_load": case(
+        "`Analytic solution = mandel` without `Analytic load`",
+        ["set Exact solution/Analytic load, the compressive load (Mandel: "
+         "the force F per unit length on the plate, in N/m), to a non-zero "
+         "value"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Exact solution", Analytic_solution="mandel")}),
     # Fracture geometry.
     "duplicate_fractures": case(
         "the same segment given twice",

@@ -165,7 +165,18 @@ namespace PolyFrac
       std::vector<unsigned> neumann_ids;
       /** Neumann traction: g_N, a vector expression. */
       std::string neumann_traction;
+      /**
+       * Dirichlet components ("0: x; 2: y" are rollers): for each listed
+       * Dirichlet boundary id, which components (x, y, z) are fixed; the
+       * others are free and traction-free. An id not listed fixes all.
+       */
+      std::map<unsigned int, std::vector<bool>> dirichlet_components;
     } boundary; /**< The subsection Boundary conditions. */
+
+    /** Initial stress/Stress: the in-situ effective stress σ0, dim × dim
+     * expressions row by row (';'-separated), or 0. The momentum balance
+     * gains −Σ_K |K| σ0(x̄_K):ε_K(v) on its right-hand side. */
+    std::string initial_stress;
 
     /** Exact solution, each empty when not given. */
     struct ExactData
@@ -180,6 +191,11 @@ namespace PolyFrac
       std::string matrix_pressure;
       /** Fracture pressure p_f (adds err_fracture_pressure). */
       std::string fracture_pressure;
+      /** Analytic solution: none | terzaghi | mandel (built-in series). */
+      std::string analytic_solution;
+      /** Analytic load: Terzaghi's q (Pa) or Mandel's F (N/m), compressive
+       * when positive. */
+      double analytic_load;
     } exact; /**< The subsection Exact solution. */
 
     /** Convergence study/Number of refinement levels. */
@@ -338,10 +354,22 @@ namespace PolyFrac
     warn_unused_entries();
 
     /** Throws naming the file and @p entry if @p expression does not have
-     * dim components (the single value `0` means the zero vector). */
+     * @p n_components components (0: dim; the single value `0` means
+     * zero in every component). */
     std::string
     checked_vector_expression(const std::string &entry,
-                              const std::string &expression) const;
+                              const std::string &expression,
+                              const unsigned int n_components = 0) const;
+
+    /** Reads Boundary conditions/Dirichlet components; throws naming the
+     * entry on a malformed item, an unknown component or an id that is
+     * not a Dirichlet id. */
+    void
+    read_dirichlet_components(const std::string &text);
+
+    /** Throws unless Exact solution/Analytic solution fits the scene. */
+    void
+    check_analytic_solution() const;
 
     /** Shared, so that a Parameters object can be copied and modified. */
     std::shared_ptr<ParameterHandler> prm;

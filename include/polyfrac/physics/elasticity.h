@@ -28,11 +28,14 @@ namespace PolyFrac
    *
    *   Σ_K |K| σ_K(u):ε_K(v) + Σ_K (2μ+λ) S_K(u, v)
    *     = Σ_K ∫_K f·Π^K v + Σ_{σ∈F_N} |σ| g_N(x̄_σ)·v̄_{Kσ}
-   *       − Σ_{σ∈F_Γ} |σ| (λ_σ + p_{f,σ} n^+)·[[v]]_σ,
+   *       − Σ_{σ∈F_Γ} |σ| (λ_σ + p_{f,σ} n^+)·[[v]]_σ
+   *       − Σ_K |K| σ0(x̄_K):ε_K(v),
    *
    * with λ_σ = λ(x̄_σ) (= −T^+) and p_{f,σ} = p_f(x̄_σ) from the parameter
-   * file, and u = g_D on the node sides of the Dirichlet boundary (each
-   * side takes the one-sided limit of g_D from its own cells).
+   * file, σ0 the in-situ stress (Initial stress/Stress), and u = g_D on
+   * the node sides of the Dirichlet boundary (each side takes the one-sided
+   * limit of g_D from its own cells), in the components Boundary
+   * conditions/Dirichlet components fixes (rollers).
    *
    * Linear solvers: UMFPACK on a deal.II matrix, or CG with Trilinos ML
    * AMG on a Trilinos matrix. The matrix is assembled straight into the
@@ -166,8 +169,13 @@ namespace PolyFrac
     const FractureNetwork<dim> &network;
     const DoFMap<dim>          &dofs;
 
+    /** σ0(@p x) of Initial stress/Stress; throws naming the point if it
+     * is not symmetric. */
+    Tensor<2, dim>
+    initial_stress_value(const Point<dim> &x) const;
+
     std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
-      fracture_pressure, traction;
+      fracture_pressure, traction, initial_stress;
 
     AffineConstraints<double> constraints;
     /** Pattern of #matrix (the Trilinos matrix keeps its own). */
