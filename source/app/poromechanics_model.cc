@@ -43,9 +43,8 @@ namespace PolyFrac
                  *discretization.geometry,
                  *discretization.network,
                  *discretization.dofs)
-    , fixed_stress_coefficient(
-        std::pow(prm.flow.biot_coefficient, 2) /
-        (prm.lame_lambda + 2 * prm.lame_mu / dim))
+    , fixed_stress_coefficient(std::pow(prm.flow.biot_coefficient, 2) /
+                               (prm.lame_lambda + 2 * prm.lame_mu / dim))
     , pressure(flow.initial_pressure())
     , initial_cell_pressure(flow.cell_pressures(pressure))
   {
@@ -53,11 +52,11 @@ namespace PolyFrac
     elasticity.assemble();
     if (discretization.network->n_fracture_faces() > 0)
       {
-        contact = std::make_unique<ContactMechanics<dim>>(
-          prm,
-          *discretization.geometry,
-          *discretization.network,
-          *discretization.dofs);
+        contact =
+          std::make_unique<ContactMechanics<dim>>(prm,
+                                                  *discretization.geometry,
+                                                  *discretization.network,
+                                                  *discretization.dofs);
         fracture_relaxation = fracture_compliance();
       }
     state.displacement.reinit(discretization.dofs->n_displacement_dofs());
@@ -77,7 +76,9 @@ namespace PolyFrac
     elasticity.solve(
       loaded,
       coupling.pressure_load(
-        {}, 0., std::vector<double>(discretization.network->n_fracture_faces(), 1.)));
+        {},
+        0.,
+        std::vector<double>(discretization.network->n_fracture_faces(), 1.)));
     Vector<double> response = loaded.displacement;
     response -= unloaded.displacement;
     std::vector<double> opening = coupling.normal_jumps(response);
@@ -102,13 +103,12 @@ namespace PolyFrac
 
   template <int dim>
   FlowStepData
-  PoromechanicsModel<dim>::fixed_stress_data(
-    const double                t,
-    const double                time_step,
-    const MechanicalState<dim> &start,
-    const Vector<double>       &p_start,
-    const MechanicalState<dim> &u_k,
-    const Vector<double>       &p_k) const
+  PoromechanicsModel<dim>::fixed_stress_data(const double t,
+                                             const double time_step,
+                                             const MechanicalState<dim> &start,
+                                             const Vector<double> &p_start,
+                                             const MechanicalState<dim> &u_k,
+                                             const Vector<double> &p_k) const
   {
     FlowStepData data = flow.flow_step_data(t, time_step);
     const double b    = prm.flow.biot_coefficient;
@@ -116,7 +116,8 @@ namespace PolyFrac
 
     // Cells: |K| [(1/M)(p − p^{n−1}) + b div_K(u^k − u^{n−1})
     //             + L (p − p^k)] / Δt + fluxes = |K| h_m.
-    const std::vector<double> volume_k = coupling.volume_changes(u_k.displacement);
+    const std::vector<double> volume_k =
+      coupling.volume_changes(u_k.displacement);
     const std::vector<double> volume_0 =
       coupling.volume_changes(start.displacement);
     const std::vector<double> pk = flow.cell_pressures(p_k);
@@ -132,10 +133,10 @@ namespace PolyFrac
 
     // Fracture faces: |σ| [(d^k − d^{n−1}) + a_σ (p_f − p_f^k)] / Δt
     //                 + fluxes − exchange = |σ| h_f.
-    const std::vector<double> d_k    = apertures(u_k);
-    const std::vector<double> d_0    = apertures(start);
-    const std::vector<double> pf_k   = flow.fracture_pressures(p_k);
-    const std::vector<double> pf_0   = flow.fracture_pressures(p_start);
+    const std::vector<double> d_k  = apertures(u_k);
+    const std::vector<double> d_0  = apertures(start);
+    const std::vector<double> pf_k = flow.fracture_pressures(p_k);
+    const std::vector<double> pf_0 = flow.fracture_pressures(p_start);
     for (unsigned int i = 0; i < d_k.size(); ++i)
       {
         data.apertures[i]        = d_k[i];
@@ -189,11 +190,11 @@ namespace PolyFrac
         elasticity.assemble();
       }
 
-    StepReport           report;
-    report.coupling_iterations = 0;
-    report.newton_iterations   = 0;
-    MechanicalState<dim> u_k = state;
-    Vector<double>       p_k = pressure;
+    StepReport report;
+    report.coupling_iterations     = 0;
+    report.newton_iterations       = 0;
+    MechanicalState<dim> u_k       = state;
+    Vector<double>       p_k       = pressure;
     double               increment = 0;
     try
       {
@@ -210,8 +211,8 @@ namespace PolyFrac
             increment =
               relative_increment(u_next.displacement, u_k.displacement) +
               relative_increment(p_next, p_k);
-            u_k                         = u_next;
-            p_k                         = p_next;
+            u_k                        = u_next;
+            p_k                        = p_next;
             report.coupling_iterations = k;
             if (increment <= prm.nonlinear.coupling_tolerance)
               break;
@@ -223,7 +224,7 @@ namespace PolyFrac
         e.print_info(what);
         report.converged = false;
         report.failure   = "the contact solve failed in fixed-stress "
-                         "iteration " +
+                           "iteration " +
                          std::to_string(*report.coupling_iterations + 1) +
                          ": " + what.str();
         return report;
@@ -262,8 +263,8 @@ namespace PolyFrac
             *report.n_slip +=
               state.contact.tangential[i] == TangentialState::slip;
           }
-        const std::vector<double> d   = apertures(state);
-        const std::vector<double> p_f = flow.fracture_pressures(pressure);
+        const std::vector<double> d    = apertures(state);
+        const std::vector<double> p_f  = flow.fracture_pressures(pressure);
         double                    area = 0, aperture = 0, mean_p = 0;
         for (unsigned int i = 0; i < d.size(); ++i)
           {
@@ -317,15 +318,16 @@ namespace PolyFrac
   PatchData<dim, dim>
   PoromechanicsModel<dim>::matrix_output() const
   {
-    const std::vector<double> p      = flow.cell_pressures(pressure);
-    const std::vector<double> volume = coupling.volume_changes(state.displacement);
-    std::vector<double>       porosity(p.size());
+    const std::vector<double> p = flow.cell_pressures(pressure);
+    const std::vector<double> volume =
+      coupling.volume_changes(state.displacement);
+    std::vector<double> porosity(p.size());
     for (unsigned int c = 0; c < p.size(); ++c)
-      porosity[c] = prm.flow.initial_porosity +
-                    prm.flow.biot_coefficient * volume[c] /
-                      discretization.geometry->cells[c].measure +
-                    (p[c] - initial_cell_pressure[c]) *
-                      prm.flow.inverse_biot_modulus;
+      porosity[c] =
+        prm.flow.initial_porosity +
+        prm.flow.biot_coefficient * volume[c] /
+          discretization.geometry->cells[c].measure +
+        (p[c] - initial_cell_pressure[c]) * prm.flow.inverse_biot_modulus;
     return matrix_patches<dim>(*discretization.geometry,
                                *discretization.network,
                                *discretization.dofs,
@@ -340,13 +342,13 @@ namespace PolyFrac
   PatchData<dim - 1, dim>
   PoromechanicsModel<dim>::fracture_output() const
   {
-    return fracture_patches<dim>(
-      *discretization.geometry,
-      *discretization.network,
-      *discretization.dofs,
-      &state,
-      {{"fracture_pressure", flow.fracture_pressures(pressure)},
-       {"aperture", apertures(state)}});
+    return fracture_patches<dim>(*discretization.geometry,
+                                 *discretization.network,
+                                 *discretization.dofs,
+                                 &state,
+                                 {{"fracture_pressure",
+                                   flow.fracture_pressures(pressure)},
+                                  {"aperture", apertures(state)}});
   }
 
 

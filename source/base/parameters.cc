@@ -1026,7 +1026,8 @@ namespace PolyFrac
                                    exact.contact_traction :
                                    exact.displacement;
           const bool analytic = exact.analytic_solution != "none" &&
-                                (column == "err_u" || column == "err_grad_u");
+                                (column == "err_u" || column == "err_grad_u" ||
+                                 column == "err_pressure");
           AssertThrow(!field.empty() || analytic,
                       ExcMessage("In <" + file_name +
                                  ">: Convergence study checks " + column +
@@ -1078,9 +1079,9 @@ namespace PolyFrac
     read_flow();
 
     prm->enter_subsection("Nonlinear solver");
-    nonlinear.max_iterations = prm->get_integer("Maximum iterations");
-    nonlinear.tolerance      = prm->get_double("Tolerance");
-    nonlinear.initial_guess  = prm->get("Initial guess");
+    nonlinear.max_iterations     = prm->get_integer("Maximum iterations");
+    nonlinear.tolerance          = prm->get_double("Tolerance");
+    nonlinear.initial_guess      = prm->get("Initial guess");
     nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
     nonlinear.max_coupling_iterations =
       prm->get_integer("Maximum coupling iterations");

@@ -41,7 +41,7 @@ namespace PolyFrac
         divergence.add(c, dof, value);
 
     // J: |σ| [[v]]_σ·n^+ with the jump coefficients of doc/scheme.md §4.
-    DynamicSparsityPattern jump_dsp(n_faces, n_dofs);
+    DynamicSparsityPattern         jump_dsp(n_faces, n_dofs);
     std::vector<BlockCoefficients> jumps;
     for (unsigned int i = 0; i < n_faces; ++i)
       {

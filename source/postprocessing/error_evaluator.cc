@@ -2,6 +2,7 @@
 
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/discretization/local_reconstruction.h>
+#include <polyfrac/postprocessing/analytic_solutions.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
 #include <array>
@@ -82,6 +83,40 @@ namespace PolyFrac
                                   dim,
                                   prm.constants);
     }
+
+    /**
+     * The exact displacement (@p pressure false) or matrix pressure: the
+     * built-in solution of Exact solution/Analytic solution, else the
+     * expression of @p entry (Exact solution/Displacement or Matrix
+     * pressure), else nothing; at time @p time.
+     */
+    template <int dim>
+    std::unique_ptr<Function<dim>>
+    exact_field(const Parameters  &prm,
+                const bool         pressure,
+                const std::string &expression,
+                const double       time)
+    {
+      std::unique_ptr<Function<dim>> exact;
+      if (prm.exact.analytic_solution != "none")
+        {
+          const auto solution = make_analytic_solution(prm);
+          if (pressure)
+            exact = std::make_unique<AnalyticPressure<dim>>(solution);
+          else
+            exact = std::make_unique<AnalyticDisplacement<dim>>(solution);
+        }
+      else if (!expression.empty())
+        exact =
+          make_expression<dim>(pressure ? "Exact solution/Matrix pressure" :
+                                          "Exact solution/Displacement",
+                               expression,
+                               pressure ? 1 : dim,
+                               prm.constants);
+      if (exact)
+        exact->set_time(time);
+      return exact;
+    }
   } // namespace
 
 
@@ -112,14 +147,10 @@ namespace PolyFrac
                  const double                time)
   {
     Errors errors;
-    if (!prm.exact.displacement.empty())
+    if (const auto exact =
+          exact_field<dim>(prm, false, prm.exact.displacement, time))
       {
-        const auto exact = make_expression<dim>("Exact solution/Displacement",
-                                                prm.exact.displacement,
-                                                dim,
-                                                prm.constants);
-        exact->set_time(time);
-        double     e_u = 0, n_u = 0, e_grad = 0, n_grad = 0;
+        double                      e_u = 0, n_u = 0, e_grad = 0, n_grad = 0;
         Vector<double>              u(dim);
         std::vector<Tensor<1, dim>> grad_u(dim);
         for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
@@ -148,7 +179,7 @@ namespace PolyFrac
       {
         const auto exact = exact_jump<dim>(prm);
         exact->set_time(time);
-        const auto sums  = fracture_face_errors<dim>(
+        const auto sums = fracture_face_errors<dim>(
           *exact, geometry, network, [&](const unsigned int i) {
             return state.jump_value(geometry, dofs, network, i);
           });
@@ -189,14 +220,9 @@ namespace PolyFrac
                       const double                time,
                       Errors                     &errors)
   {
-    if (!prm.exact.matrix_pressure.empty())
+    if (const auto exact =
+          exact_field<dim>(prm, true, prm.exact.matrix_pressure, time))
       {
-        const auto exact =
-          make_expression<dim>("Exact solution/Matrix pressure",
-                               prm.exact.matrix_pressure,
-                               1,
-                               prm.constants);
-        exact->set_time(time);
         std::vector<Point<dim>> points;
         std::vector<double>     measures;
         for (const auto &cell : geometry.cells)

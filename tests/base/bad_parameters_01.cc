@@ -2,7 +2,7 @@
 // and the entry (the test fails if one of them does not throw): unknown entry,
 // wrong pattern, wrong number of vector components, unparsable expression, bad
 // dimension, missing mesh file, unresolved fracture, no Dirichlet boundary,
-// unavailable model; for contact mechanics: no fracture, negative friction
+// for contact mechanics: no fracture, negative friction
 // coefficient or Tresca threshold, beta <= 0 or not a number, unresolved
 // fracture.
 
