@@ -184,8 +184,9 @@ namespace PolyFrac
 
 
   template <int dim>
-  Simulator<dim>::Simulator(const Parameters &prm)
+  Simulator<dim>::Simulator(const Parameters &prm, ModelFactory factory)
     : prm(prm)
+    , factory(std::move(factory))
   {}
 
 
@@ -263,7 +264,7 @@ namespace PolyFrac
     MeshBuilder::check_weights(prm, *discretization.geometry);
 
     timer.enter_subsection("assembly");
-    const std::unique_ptr<Model<dim>> model = make_model(prm, discretization);
+    const std::unique_ptr<Model<dim>> model = factory(prm, discretization);
     timer.leave_subsection();
     if (coarser)
       model->start_from(*coarser);
@@ -346,16 +347,16 @@ namespace PolyFrac
         if (!report.converged)
           {
             ++n_cuts;
+            std::ostringstream what;
+            what << "The step from t = " << t_old << " to t = " << t_new
+                 << " failed: " << report.failure;
             AssertThrow(n_cuts <= 10,
-                        ExcMessage(
-                          "The step from t = " + std::to_string(t_old) +
-                          " did not converge after halving the time step " +
-                          "10 times (last try to t = " + std::to_string(t_new) +
-                          "): " + report.failure +
-                          " The last converged state (t = " +
-                          std::to_string(t_old) + ") is in the output files."));
-            out << "Step to t = " << t_new << " failed (" << report.failure
-                << "): halving the time step" << std::endl;
+                        ExcMessage(what.str() +
+                                   " It failed after halving the time step "
+                                   "10 times; the last converged state, at "
+                                   "the start of this step, is in the output "
+                                   "files."));
+            out << what.str() << " Halving the time step." << std::endl;
             time.set_desired_next_step_size(time.get_next_step_size() / 2);
             continue;
           }

@@ -62,32 +62,14 @@ namespace PolyFrac
           }
       }
 
-    // Dirichlet values of the node sides; without bubbles, the bubbles
-    // are fixed to zero (the stability study).
-    elasticity.make_constraints();
-    for (const auto &line : elasticity.get_constraints().get_lines())
-      dirichlet[line.index] = line.inhomogeneity;
-    if (!prm.contact.bubbles)
-      for (unsigned int i = 0; i < n_faces; ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          dirichlet[dofs.bubble_dof(i, d)] = 0.;
-
+    make_dirichlet_values();
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;
     make_saddle_point_pattern(geometry, dofs, jumps, sparsity);
     stiffness.reinit(sparsity);
     load_vector.reinit(n);
     elasticity.assemble_operator(stiffness, load_vector);
-
-    // Norm of the assembled load: F − A u_D on the free dofs.
-    Vector<double> lifting(n), reduced(n);
-    for (const auto &[dof, value] : dirichlet)
-      lifting(dof) = value;
-    stiffness.vmult(reduced, lifting);
-    reduced.sadd(-1., load_vector);
-    for (const auto &[dof, value] : dirichlet)
-      reduced(dof) = 0;
-    load_norm = reduced.l2_norm();
+    compute_load_norm();
 
     solution.reinit(n);
     previous_step.reinit(n);
@@ -95,6 +77,58 @@ namespace PolyFrac
     if (prm.solver.method == "AMG" && prm.contact.bubbles)
       condensation = std::make_unique<FaceCondensation<dim>>(
         stiffness, dofs, jumps, dirichlet, geometry.mesh.vertices, prm.solver);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::make_dirichlet_values()
+  {
+    // Dirichlet values of the node sides; without bubbles, the bubbles
+    // are fixed to zero (the stability study).
+    elasticity.make_constraints();
+    dirichlet.clear();
+    for (const auto &line : elasticity.get_constraints().get_lines())
+      dirichlet[line.index] = line.inhomogeneity;
+    if (!prm.contact.bubbles)
+      for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          dirichlet[dofs.bubble_dof(i, d)] = 0.;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::compute_load_norm()
+  {
+    // Norm of the assembled load: F − A u_D on the free dofs.
+    const unsigned int n = load_vector.size();
+    Vector<double>     lifting(n), reduced(n);
+    for (const auto &[dof, value] : dirichlet)
+      lifting(dof) = value;
+    stiffness.vmult(reduced, lifting);
+    reduced.sadd(-1., load_vector);
+    for (const auto &[dof, value] : dirichlet)
+      reduced(dof) = 0;
+    load_norm = reduced.l2_norm();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::set_loads(const double          t,
+                                   const Vector<double> &additional_load)
+  {
+    elasticity.set_time(t);
+    make_dirichlet_values();
+    load_vector = 0;
+    elasticity.assemble_load(load_vector);
+    for (unsigned int k = 0; k < additional_load.size(); ++k)
+      load_vector(k) += additional_load(k);
+    compute_load_norm();
   }
 
 

@@ -163,6 +163,7 @@ namespace PolyFrac
   Elasticity<dim>::assemble()
   {
     make_constraints();
+    direct.reset();
     const auto                   &mesh   = geometry.mesh;
     const types::global_dof_index n_dofs = dofs.n_displacement_dofs();
 
@@ -267,26 +268,56 @@ namespace PolyFrac
                                   MatrixType     &system_matrix,
                                   Vector<double> &system_rhs) const
   {
-    Vector<double> f(dim);
     for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
       {
         const LocalReconstruction<dim> local(geometry, dofs, network, cell);
-        const FullMatrix<double>       A = local_stiffness(local);
-        Vector<double>                 b(A.m());
-        for (const auto &q : geometry.quadrature(cell))
-          {
-            body_force->vector_value(q.point, f);
-            for (unsigned int t = 0; t < local.n_local(); ++t)
-              {
-                const double phi =
-                  q.weight * local.potential_coefficient(t, q.point);
-                for (unsigned int d = 0; d < dim; ++d)
-                  b(dim * t + d) += f(d) * phi;
-              }
-          }
-        c.distribute_local_to_global(
-          A, b, dofs.cell_dofs(cell), system_matrix, system_rhs);
+        c.distribute_local_to_global(local_stiffness(local),
+                                     cell_load(local, cell),
+                                     dofs.cell_dofs(cell),
+                                     system_matrix,
+                                     system_rhs);
       }
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Elasticity<dim>::cell_load(const LocalReconstruction<dim> &local,
+                             const unsigned int              cell) const
+  {
+    Vector<double> f(dim), b(dim * local.n_local());
+    for (const auto &q : geometry.quadrature(cell))
+      {
+        body_force->vector_value(q.point, f);
+        for (unsigned int t = 0; t < local.n_local(); ++t)
+          {
+            const double phi =
+              q.weight * local.potential_coefficient(t, q.point);
+            for (unsigned int d = 0; d < dim; ++d)
+              b(dim * t + d) += f(d) * phi;
+          }
+      }
+    return b;
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::assemble_load(Vector<double> &system_rhs) const
+  {
+    for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
+      {
+        const LocalReconstruction<dim> local(geometry, dofs, network, cell);
+        const Vector<double>           b          = cell_load(local, cell);
+        const auto                     local_dofs = dofs.cell_dofs(cell);
+        for (unsigned int k = 0; k < b.size(); ++k)
+          system_rhs(local_dofs[k]) += b(k);
+      }
+    AffineConstraints<double> none;
+    none.close();
+    assemble_face_loads(none, system_rhs, false);
   }
 
 
@@ -308,20 +339,28 @@ namespace PolyFrac
 
   template <int dim>
   unsigned int
-  Elasticity<dim>::solve(MechanicalState<dim> &state)
+  Elasticity<dim>::solve(MechanicalState<dim> &state,
+                         const Vector<double> &additional_load)
   {
+    Vector<double> load = rhs;
+    for (unsigned int k = 0; k < additional_load.size(); ++k)
+      if (!constraints.is_constrained(k))
+        load(k) += additional_load(k);
     Vector<double> &u = state.displacement;
     u.reinit(dofs.n_displacement_dofs());
     unsigned int iterations = 0;
     if (prm.solver.method == "direct")
       {
-        SparseDirectUMFPACK direct;
-        direct.initialize(matrix);
-        direct.vmult(u, rhs);
+        if (!direct)
+          {
+            direct = std::make_unique<SparseDirectUMFPACK>();
+            direct->initialize(matrix);
+          }
+        direct->vmult(u, load);
       }
     else
       iterations = solve_cg_amg(
-        trilinos_matrix, u, rhs, dofs, geometry.mesh.vertices, prm.solver);
+        trilinos_matrix, u, load, dofs, geometry.mesh.vertices, prm.solver);
     constraints.distribute(u);
 
     state.multipliers.clear();
@@ -329,6 +368,54 @@ namespace PolyFrac
       state.multipliers.push_back(prescribed_traction(i));
     state.contact = ContactStates();
     return iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::set_time(const double t)
+  {
+    for (auto *function :
+         {&body_force, &dirichlet, &neumann, &fracture_pressure, &traction})
+      (*function)->set_time(t);
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Elasticity<dim>::pressure_load(
+    const std::vector<double> &cell_pressure,
+    const double               biot_coefficient,
+    const std::vector<double> &fracture_pressure) const
+  {
+    Vector<double> load(dofs.n_displacement_dofs());
+    // Σ_K |K| b p_K div_K v: div_K v = Σ_t v_t · G_t (the gradient
+    // coefficients of the local unknowns t).
+    for (unsigned int c = 0; c < cell_pressure.size(); ++c)
+      {
+        const LocalReconstruction<dim> local(geometry, dofs, network, c);
+        const auto                     local_dofs = dofs.cell_dofs(c);
+        const double                   factor =
+          local.measure * biot_coefficient * cell_pressure[c];
+        for (unsigned int t = 0; t < local.n_local(); ++t)
+          for (unsigned int d = 0; d < dim; ++d)
+            load(local_dofs[dim * t + d]) +=
+              factor * local.gradient_coefficients[t][d];
+      }
+    // − Σ_σ |σ| p_{f,σ} [[v]]_σ·n^+.
+    for (unsigned int i = 0; i < fracture_pressure.size(); ++i)
+      {
+        const Tensor<1, dim> n = network.normal(i);
+        const double         factor =
+          -geometry.faces[network.fracture_faces[i].face].measure *
+          fracture_pressure[i];
+        for (const auto &[block, w] : jump(geometry, dofs, network, i))
+          for (unsigned int d = 0; d < dim; ++d)
+            load(dim * block + d) += factor * w * n[d];
+      }
+    return load;
   }
 
 

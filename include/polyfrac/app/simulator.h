@@ -4,11 +4,13 @@
 #include <deal.II/base/timer.h>
 
 #include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/model.h>
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -38,8 +40,16 @@ namespace PolyFrac
   class Simulator
   {
   public:
-    /** The program for the scene of @p prm, which must outlive it. */
-    explicit Simulator(const Parameters &prm);
+    /** Builds the model of a level: make_model() unless a test gives its
+     * own. */
+    using ModelFactory = std::function<std::unique_ptr<Model<dim>>(
+      const Parameters &,
+      const LevelDiscretization<dim> &)>;
+
+    /** The program for the scene of @p prm, which must outlive it, with the
+     * models of @p factory. */
+    explicit Simulator(const Parameters &prm,
+                       ModelFactory      factory = make_model<dim>);
 
     /** Runs every level: prints the progress and the tables to @p out and
      * writes the outputs to the output directory. */
@@ -75,6 +85,7 @@ namespace PolyFrac
     report_checks(std::ostream &out) const;
 
     const Parameters           &prm;
+    const ModelFactory          factory;
     std::vector<ConvergenceRow> rows;
     /** The files written to the output directory, in order. */
     std::vector<std::string> written_files;

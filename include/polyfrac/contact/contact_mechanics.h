@@ -111,6 +111,14 @@ namespace PolyFrac
     void
     solve(MechanicalState<dim> &state, std::ostream &out);
 
+    /**
+     * The loads and Dirichlet data at time @p t, plus @p additional_load on
+     * the displacement unknowns (e.g. Elasticity::pressure_load() of a
+     * coupled step), for the next solve(); the operator is unchanged.
+     */
+    void
+    set_loads(const double t, const Vector<double> &additional_load);
+
     /** Total number of Newton iterations over the load steps. */
     unsigned int
     n_newton_iterations() const
@@ -133,6 +141,15 @@ namespace PolyFrac
     }
 
   private:
+    /** Fills #dirichlet from the Dirichlet constraints of the elasticity
+     * operator (and the bubbles when Contact/Bubbles = false). */
+    void
+    make_dirichlet_values();
+
+    /** #load_norm: the norm of F − A u_D on the free dofs. */
+    void
+    compute_load_norm();
+
     /** Jump [[u]]_σ and multiplier λ_σ of face i in @p x. */
     Tensor<1, dim>
     face_jump(const Vector<double> &x, const unsigned int i) const;

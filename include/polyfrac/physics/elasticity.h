@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -58,12 +59,40 @@ namespace PolyFrac
     assemble();
 
     /**
-     * Solves; writes the displacement and the prescribed fracture traction
-     * (as the multipliers) to @p state. Returns the number of linear
-     * iterations (0 for UMFPACK).
+     * Solves with the assembled load plus @p additional_load (e.g. the
+     * pressure_load() of a coupled step; empty: none), zero on the
+     * Dirichlet dofs; writes the displacement and the prescribed fracture
+     * traction (as the multipliers) to @p state. The UMFPACK factorisation
+     * is kept for the next solve until assemble() is called again. Returns
+     * the number of linear iterations (0 for UMFPACK).
      */
     unsigned int
-    solve(MechanicalState<dim> &state);
+    solve(MechanicalState<dim> &state,
+          const Vector<double> &additional_load = Vector<double>());
+
+    /**
+     * Sets the time of the expressions of the loads, the Dirichlet data and
+     * the prescribed fracture pressure and traction; assemble() (or, with
+     * contact, ContactMechanics::set_time()) then uses their values at @p t.
+     */
+    void
+    set_time(const double t);
+
+    /**
+     * The load of the pressures on the displacement unknowns (doc/scheme.md
+     * §5, moved to the right-hand side):
+     *
+     *   Σ_K |K| b p_K div_K v − Σ_{σ∈F_Γ} |σ| p_{f,σ} [[v]]_σ·n^+,
+     *
+     * with @p cell_pressure p_K per polytope (empty: none), the Biot
+     * coefficient @p biot_coefficient, and @p fracture_pressure p_{f,σ} per
+     * fracture face (empty: none). Unconstrained: one entry per
+     * displacement dof.
+     */
+    Vector<double>
+    pressure_load(const std::vector<double> &cell_pressure,
+                  const double               biot_coefficient,
+                  const std::vector<double> &fracture_pressure) const;
 
     /** Unknowns of the linear system: displacement dofs not fixed by Dirichlet
      * data. */
@@ -94,6 +123,15 @@ namespace PolyFrac
     }
 
     /**
+     * Adds the unconstrained load F (body force, Neumann traction, fracture
+     * pressure of Fractures/Pressure; no prescribed traction) at the time of
+     * set_time() to @p system_rhs, which may be larger than the
+     * displacement block.
+     */
+    void
+    assemble_load(Vector<double> &system_rhs) const;
+
+    /**
      * Adds the unconstrained operator A and load F (body force, Neumann
      * traction, fracture pressure; no prescribed traction) to
      * @p system_matrix and @p system_rhs, which may be larger than the
@@ -111,6 +149,11 @@ namespace PolyFrac
 
     FullMatrix<double>
     local_stiffness(const LocalReconstruction<dim> &local) const;
+
+    /** ∫_K f·Π^K v for the local unknowns of @p local, on cell @p cell. */
+    Vector<double>
+    cell_load(const LocalReconstruction<dim> &local,
+              const unsigned int              cell) const;
 
     /**
      * Adds the cell stiffness matrices and body-force loads, condensed by
@@ -149,6 +192,9 @@ namespace PolyFrac
     /** System matrix for Linear solver/Method = AMG. */
     TrilinosWrappers::SparseMatrix trilinos_matrix;
     Vector<double>                 rhs;
+    /** The factorisation of #matrix (Method = direct), made by the first
+     * solve() after assemble(). */
+    std::unique_ptr<SparseDirectUMFPACK> direct;
   };
 } // namespace PolyFrac
 

@@ -1,0 +1,193 @@
+// The driver's time loop with a model that knows nothing of mechanics: the
+// decay y' = −y, y(0) = 1, by implicit Euler, y^n = y^{n−1}/(1 + Δt). Its
+// step fails when Δt > 0.03, so each step of the nominal Δt = 0.05 is halved
+// once and retried; the driver then restores the nominal Δt. Asserted: the
+// steps land on 0.025, 0.05, 0.075, 0.1 (DiscreteTime), the time series has
+// one row per converged step, the failed tries leave the state untouched (y
+// is the exact implicit Euler value), the Newton iterations are summed over
+// the steps, the model's cell field reaches the VTU output, and a model that
+// never converges stops the run with a message naming what was tried.
+
+#include <polyfrac/app/simulator.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "../tests.h"
+
+using namespace PolyFrac;
+
+/** y' = −y, one value per polytope (all equal). */
+class Decay : public Model<2>
+{
+public:
+  Decay(const LevelDiscretization<2> &discretization, const double largest_step)
+    : discretization(discretization)
+    , largest_step(largest_step)
+  {}
+
+  bool
+  is_time_dependent() const override
+  {
+    return true;
+  }
+
+  StepReport
+  step(const double t_old, const double t_new, std::ostream &out) override
+  {
+    StepReport report;
+    if (t_new - t_old > largest_step)
+      {
+        report.converged = false;
+        std::ostringstream failure;
+        failure << "the step is longer than " << largest_step
+                << " (the test's rule).";
+        report.failure = failure.str();
+        return report;
+      }
+    y /= 1 + (t_new - t_old);
+    out << "  step to " << t_new << ": y = " << y << std::endl;
+    report.newton_iterations = 1;
+    return report;
+  }
+
+  types::global_dof_index
+  n_unknowns() const override
+  {
+    return 1;
+  }
+
+  Errors
+  errors(const double t) const override
+  {
+    Errors errors;
+    errors.u = ErrorValue{std::abs(y - std::exp(-t)) / std::exp(-t), false};
+    return errors;
+  }
+
+  PatchData<2, 2>
+  matrix_output() const override
+  {
+    const auto &d = discretization;
+    return matrix_patches<2>(*d.geometry,
+                             *d.network,
+                             *d.dofs,
+                             nullptr,
+                             nullptr,
+                             {{"y",
+                               std::vector<double>(d.mesh->n_cells(), y)}});
+  }
+
+  PatchData<1, 2>
+  fracture_output() const override
+  {
+    const auto &d = discretization;
+    return fracture_patches<2>(*d.geometry, *d.network, *d.dofs, nullptr);
+  }
+
+private:
+  double                        y = 1;
+  const LevelDiscretization<2> &discretization;
+  const double                  largest_step;
+};
+
+
+
+int
+main()
+{
+  Parameters prm           = Testing::default_parameters(2, 2);
+  prm.output.directory     = "driver_01-results";
+  prm.output.print_timings = false;
+  prm.time.end_time        = 0.1;
+  prm.time.time_step       = 0.05;
+
+  Simulator<2>       simulator(prm,
+                         [](const Parameters &,
+                            const LevelDiscretization<2> &d) {
+                           return std::make_unique<Decay>(d, 0.03);
+                         });
+  std::ostringstream log;
+  simulator.run(log);
+  std::cout << log.str();
+
+  // The time series: a header and one row per converged step.
+  std::ifstream            in("driver_01-results/time_series-level-0.csv");
+  std::string              line;
+  std::vector<std::string> rows;
+  while (std::getline(in, line))
+    rows.push_back(line);
+  AssertThrow(rows.size() == 5,
+              ExcMessage("time_series-level-0.csv has " +
+                         std::to_string(rows.size()) +
+                         " lines, expected a header and 4 steps."));
+  double y = 1;
+  for (unsigned int n = 1; n <= 4; ++n)
+    {
+      std::istringstream       row(rows[n]);
+      std::string              cell;
+      std::vector<std::string> cells;
+      while (std::getline(row, cell, ','))
+        cells.push_back(cell);
+      const double t = std::stod(cells[1]), dt = std::stod(cells[2]);
+      y /= 1 + 0.025;
+      Testing::expect_round_off("time of step " + std::to_string(n),
+                                t - 0.025 * n);
+      Testing::expect_round_off("step size of step " + std::to_string(n),
+                                dt - 0.025);
+      AssertThrow(cells[0] == std::to_string(n) && cells[4] == "1",
+                  ExcMessage("step " + std::to_string(n) +
+                             ": wrong step number or Newton count in <" +
+                             rows[n] + ">."));
+      Testing::expect_round_off("err_u of step " + std::to_string(n),
+                                std::stod(cells[12]) -
+                                  std::abs(y - std::exp(-t)) / std::exp(-t),
+                                1e-6);
+    }
+  std::cout
+    << "Time series: 4 steps of 0.025 (three tries of 0.05 halved), asserted"
+    << std::endl;
+
+  // The model's cell field is in the output, and the initial state too.
+  for (const std::string name : {"solution-level-0-0000.vtu",
+                                 "solution-level-0-0004.vtu",
+                                 "solution-level-0.pvd"})
+    {
+      std::ifstream     file("driver_01-results/" + name);
+      std::stringstream content;
+      content << file.rdbuf();
+      AssertThrow(file &&
+                    (name.find(".vtu") == std::string::npos ||
+                     content.str().find("Name=\"y\"") != std::string::npos),
+                  ExcMessage("driver_01-results/" + name +
+                             " is missing or has no field y."));
+    }
+  std::cout << "VTU series with the field y: steps 0 to 4, asserted"
+            << std::endl;
+
+  // A model that never converges: the run stops and says what it tried.
+  prm.output.directory = "driver_01-results-failing";
+  Simulator<2>       failing(prm,
+                       [](const Parameters &, const LevelDiscretization<2> &d) {
+                         return std::make_unique<Decay>(d, 0.);
+                       });
+  std::ostringstream failing_log;
+  try
+    {
+      failing.run(failing_log);
+      AssertThrow(false,
+                  ExcMessage("A step that never converges did not stop "
+                             "the run."));
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::ostringstream message;
+      e.print_info(message);
+      AssertThrow(message.str().find("after halving the time step 10 times") !=
+                      std::string::npos &&
+                    message.str().find("the test's rule") != std::string::npos,
+                  ExcMessage("Unexpected message: " + message.str()));
+      std::cout << "Never converging: stopped with" << message.str();
+    }
+}
