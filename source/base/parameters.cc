@@ -1422,6 +1422,28 @@ namespace PolyFrac
             "through the bubbles; with Contact/Bubbles = false every step "
             "uses UMFPACK on the saddle point");
       }
+    if (model == "elasticity" || model == "contact mechanics")
+      {
+        for (const std::string entry : {"Permeability",
+                                        "Viscosity",
+                                        "Biot coefficient",
+                                        "Inverse Biot modulus",
+                                        "Initial porosity",
+                                        "Initial pressure",
+                                        "Fracture aperture at contact",
+                                        "Minimum fracture aperture",
+                                        "Fracture normal transmissibility",
+                                        "Matrix source",
+                                        "Fracture source",
+                                        "Pressure boundary ids",
+                                        "Pressure boundary expression",
+                                        "Flux boundary ids",
+                                        "Flux boundary expression",
+                                        "HFV stabilisation"})
+          warn_if_set("Flow", entry);
+        warn_if_set("Exact solution", "Matrix pressure");
+        warn_if_set("Exact solution", "Fracture pressure");
+      }
   }
 
 
