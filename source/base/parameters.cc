@@ -307,7 +307,11 @@ namespace PolyFrac
       Patterns::Selection("elasticity|contact mechanics|flow|poromechanics"),
       "Physics of the scene. elasticity: linear elasticity with "
       "a prescribed load on the fractures (pressure and "
-      "traction).");
+      "traction). contact mechanics: frictional contact on the "
+      "fractures (subsection Contact). flow: matrix and fracture "
+      "flow (subsection Flow) with the aperture d_0, by implicit Euler "
+      "steps (subsection Time). poromechanics: both, coupled (Biot, "
+      "fracture pressure, cubic law on d_0 - [u]_n).");
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh");
