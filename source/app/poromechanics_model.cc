@@ -1,4 +1,5 @@
 #include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/postprocessing/analytic_solutions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,8 +47,13 @@ namespace PolyFrac
     , fixed_stress_coefficient(std::pow(prm.flow.biot_coefficient, 2) /
                                (prm.lame_lambda + 2 * prm.lame_mu / dim))
     , pressure(flow.initial_pressure())
-    , initial_cell_pressure(flow.cell_pressures(pressure))
   {
+    state.displacement.reinit(discretization.dofs->n_displacement_dofs());
+    state.multipliers.resize(discretization.network->n_fracture_faces());
+    if (prm.exact.analytic_solution != "none")
+      use_analytic_solution();
+    initial_cell_pressure = flow.cell_pressures(pressure);
+    initial_volume        = coupling.volume_changes(state.displacement);
     elasticity.set_time(0);
     elasticity.assemble();
     if (discretization.network->n_fracture_faces() > 0)
@@ -59,8 +65,30 @@ namespace PolyFrac
                                                   *discretization.dofs);
         fracture_relaxation = fracture_compliance();
       }
-    state.displacement.reinit(discretization.dofs->n_displacement_dofs());
-    state.multipliers.resize(discretization.network->n_fracture_faces());
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicsModel<dim>::use_analytic_solution()
+  {
+    const auto solution = make_analytic_solution(prm);
+    const auto displacement =
+      std::make_shared<AnalyticDisplacement<dim>>(solution);
+    elasticity.set_dirichlet_data(displacement);
+    displacement->set_time(0);
+    const AnalyticPressure<dim> p(solution);
+    pressure            = flow.interpolate(p);
+    const auto    &dofs = *discretization.dofs;
+    Vector<double> u(dim);
+    for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
+      {
+        displacement->vector_value(
+          discretization.mesh->vertices[dofs.node_sides[n].vertex], u);
+        for (unsigned int d = 0; d < dim; ++d)
+          state.displacement(dofs.node_side_dof(n, d)) = u(d);
+      }
   }
 
 
@@ -325,7 +353,7 @@ namespace PolyFrac
     for (unsigned int c = 0; c < p.size(); ++c)
       porosity[c] =
         prm.flow.initial_porosity +
-        prm.flow.biot_coefficient * volume[c] /
+        prm.flow.biot_coefficient * (volume[c] - initial_volume[c]) /
           discretization.geometry->cells[c].measure +
         (p[c] - initial_cell_pressure[c]) * prm.flow.inverse_biot_modulus;
     return matrix_patches<dim>(*discretization.geometry,

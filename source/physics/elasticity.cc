@@ -94,7 +94,7 @@ namespace PolyFrac
               if (!missing)
                 continue;
               const Vector<double> value =
-                side_limit(*dirichlet,
+                side_limit(dirichlet_data ? *dirichlet_data : *dirichlet,
                            mesh.vertices[v],
                            geometry.cells[c].centroid);
               for (unsigned int d = 0; d < dim; ++d)
@@ -441,14 +441,25 @@ namespace PolyFrac
   void
   Elasticity<dim>::set_time(const double t)
   {
-    for (auto *function :
-         {&body_force,
-          &dirichlet,
-          &neumann,
-          &fracture_pressure,
-          &traction,
-          &initial_stress})
+    for (auto *function : {&body_force,
+                           &dirichlet,
+                           &neumann,
+                           &fracture_pressure,
+                           &traction,
+                           &initial_stress})
       (*function)->set_time(t);
+    if (dirichlet_data)
+      dirichlet_data->set_time(t);
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::set_dirichlet_data(
+    const std::shared_ptr<Function<dim>> &data)
+  {
+    dirichlet_data = data;
   }
 
 

@@ -133,23 +133,29 @@ namespace PolyFrac
   Vector<double>
   Flow<dim>::initial_pressure() const
   {
-    const auto     initial = make_expression<dim>("Flow/Initial pressure",
-                                              prm.flow.initial_pressure,
-                                              1,
-                                              prm.constants);
-    const auto    &mesh    = geometry.mesh;
+    return interpolate(*make_expression<dim>(
+      "Flow/Initial pressure", prm.flow.initial_pressure, 1, prm.constants));
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Flow<dim>::interpolate(const Function<dim> &initial) const
+  {
+    const auto    &mesh = geometry.mesh;
     Vector<double> p(dofs.n_dofs());
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        p(dofs.cell_dof(c)) = initial->value(geometry.cells[c].centroid);
+        p(dofs.cell_dof(c)) = initial.value(geometry.cells[c].centroid);
         for (const unsigned int f : mesh.cells[c].faces)
-          p(dofs.face_dof(f, c)) = initial->value(geometry.faces[f].centroid);
+          p(dofs.face_dof(f, c)) = initial.value(geometry.faces[f].centroid);
       }
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       p(dofs.fracture_face_dof(i)) =
-        initial->value(geometry.faces[network.fracture_faces[i].face].centroid);
+        initial.value(geometry.faces[network.fracture_faces[i].face].centroid);
     for (unsigned int e = 0; e < edges.n_edges(); ++e)
-      p(dofs.edge_dof(e)) = initial->value(edges.edges[e].centroid);
+      p(dofs.edge_dof(e)) = initial.value(edges.edges[e].centroid);
     return p;
   }
 

@@ -76,6 +76,14 @@ namespace PolyFrac
     fracture_output() const override;
 
   private:
+    /**
+     * With Exact solution/Analytic solution: its displacement becomes the
+     * Dirichlet data and its state at t = 0 (the undrained state) the
+     * initial state.
+     */
+    void
+    use_analytic_solution();
+
     /** a_σ: the opening per unit fracture pressure of each face (probe). */
     std::vector<double>
     fracture_compliance();
@@ -125,6 +133,8 @@ namespace PolyFrac
     Vector<double> pressure;
     /** p_m^0 per cell, for the porosity. */
     std::vector<double> initial_cell_pressure;
+    /** |K| div_K u^0 per cell, for the porosity. */
+    std::vector<double> initial_volume;
   };
 } // namespace PolyFrac
 

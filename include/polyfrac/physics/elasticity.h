@@ -63,8 +63,8 @@ namespace PolyFrac
 
     /**
      * Solves with the assembled load plus @p additional_load (e.g. the
-     * BiotCoupling::pressure_load() of a coupled step; empty: none), zero on the
-     * Dirichlet dofs; writes the displacement and the prescribed fracture
+     * BiotCoupling::pressure_load() of a coupled step; empty: none), zero on
+     * the Dirichlet dofs; writes the displacement and the prescribed fracture
      * traction (as the multipliers) to @p state. The UMFPACK factorisation
      * is kept for the next solve until assemble() is called again. Returns
      * the number of linear iterations (0 for UMFPACK).
@@ -72,6 +72,14 @@ namespace PolyFrac
     unsigned int
     solve(MechanicalState<dim> &state,
           const Vector<double> &additional_load = Vector<double>());
+
+    /**
+     * Takes the Dirichlet data from @p data (e.g. a built-in analytic
+     * solution) instead of Boundary conditions/Dirichlet expression; its
+     * time follows set_time().
+     */
+    void
+    set_dirichlet_data(const std::shared_ptr<Function<dim>> &data);
 
     /**
      * Sets the time of the expressions of the loads, the Dirichlet data and
@@ -177,7 +185,9 @@ namespace PolyFrac
     std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
       fracture_pressure, traction, initial_stress;
 
-    AffineConstraints<double> constraints;
+    /** Dirichlet data replacing #dirichlet (set_dirichlet_data()). */
+    std::shared_ptr<Function<dim>> dirichlet_data;
+    AffineConstraints<double>      constraints;
     /** Pattern of #matrix (the Trilinos matrix keeps its own). */
     SparsityPattern sparsity;
     /** System matrix for Linear solver/Method = direct. */

@@ -115,6 +115,11 @@ namespace PolyFrac
     Vector<double>
     initial_pressure() const;
 
+    /** @p pressure at the cell, face, fracture face and edge centroids
+     * (at its time). */
+    Vector<double>
+    interpolate(const Function<dim> &pressure) const;
+
     /** One implicit Euler step: the pressures @p pressure at t^n from
      * those at t^{n−1}, @p previous. Returns the CG iterations (0 with
      * UMFPACK). */
