@@ -9,7 +9,7 @@ INPUT is a fracture VTU (fractures-level-K-NNNN.vtu) or its series
 side by side on a shared colour scale (e.g. the 47k and the 127k mesh).
 Writes PREFIX-normal-jump.png, PREFIX-tangential-jump.png and, for
 contact mechanics, PREFIX-states.png (open / stick / slip). Options
-(before the arguments): --labels "47k cells,127k cells" names the panels,
+(before the arguments): --labels "47k cells;127k cells" names the panels,
 --view ELEV,AZIM sets the camera (degrees, default 22,-60), --dpi N.
 
 The fracture VTU (source/io/vtu_writer.cc) holds one patch per face with
@@ -45,7 +45,8 @@ def read_faces(path):
     """Triangles (or polygons) of the fracture faces with their opening and
     slip in mm and the states, one value per cell (the patch constants)."""
     mesh = meshio.read(vtu_file(path))
-    polygons, opening, slip, states = [], [], [], []
+    polygons, opening, slip, states, fracture = [], [], [], [], []
+    fracture_index = mesh.point_data["fracture"].reshape(-1)
     normal_jump = mesh.point_data["normal_jump"].reshape(-1)
     tangential_jump = mesh.point_data["tangential_jump"].reshape(-1, 3)
     normal_state = mesh.point_data.get("normal_state")
@@ -56,10 +57,12 @@ def read_faces(path):
             first = cell[0]
             opening.append(-1e3 * normal_jump[first])
             slip.append(1e3 * np.linalg.norm(tangential_jump[first]))
+            fracture.append(int(round(float(fracture_index[first]))))
             if normal_state is not None:
                 states.append((int(round(float(normal_state[first]))),
                                int(round(float(tangential_state[first])))))
-    return np.array(polygons), np.array(opening), np.array(slip), states
+    return (np.array(polygons), np.array(opening), np.array(slip), states,
+            np.array(fracture))
 
 
 STATE_NAMES = ("open", "stick", "slip")
@@ -128,18 +131,24 @@ def main():
     parser.add_argument("--view", default="22,-60")
     parser.add_argument("--dpi", type=int, default=110)
     args = parser.parse_args()
-    labels = args.labels.split(",") if args.labels else args.inputs
+    labels = args.labels.split(";") if args.labels else args.inputs
     assert len(labels) == len(args.inputs), "one label per input"
     view = [float(a) for a in args.view.split(",")]
 
     panels, openings, slips, categories = [], [], [], []
     for label, path in zip(labels, args.inputs):
-        polygons, opening, slip, states = read_faces(path)
-        summary = "%s: %d faces, max opening %.3g mm, max slip %.3g mm" % (
-            label, len(polygons), opening.max(), slip.max())
-        if states:
-            summary += "; open %d, stick %d, slip %d" % count_states(states)
-        print(summary)
+        polygons, opening, slip, states, fracture = read_faces(path)
+        print(label)
+        for f in [None] + sorted(set(fracture)):
+            on = np.ones(len(fracture), dtype=bool) if f is None else \
+                fracture == f
+            summary = "  %-12s %5d faces, max opening %.3g mm, max slip " \
+                "%.3g mm" % ("all" if f is None else "fracture %d" % f,
+                             on.sum(), opening[on].max(), slip[on].max())
+            if states:
+                summary += "; open %d, stick %d, slip %d" % count_states(
+                    [s for s, o in zip(states, on) if o])
+            print(summary)
         panels.append((label, polygons))
         openings.append(opening)
         slips.append(slip)
