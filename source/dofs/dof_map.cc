@@ -80,6 +80,19 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::vector<DoFBlock>
+  DoFMap<dim>::blocks() const
+  {
+    const types::global_dof_index n_sides   = dim * n_node_sides();
+    const types::global_dof_index n_bubbles = dim * this->n_bubbles();
+    return {{"node-side displacement", 0, n_sides},
+            {"bubble", n_sides, n_bubbles},
+            {"multiplier", n_sides + n_bubbles, n_bubbles}};
+  }
+
+
+
+  template <int dim>
   std::vector<unsigned int>
   DoFMap<dim>::node_side_histogram() const
   {

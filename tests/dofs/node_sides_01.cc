@@ -1,6 +1,7 @@
 // Checks the number of node sides at tips (1), inside a fracture and where
 // it reaches the boundary (2), at L (2), T (3) and X (4) intersections, in
-// 2D (segments) and 3D (polygons): each count is asserted.
+// 2D (segments) and 3D (polygons): each count is asserted, and that the named
+// blocks of DoFMap (node sides, bubbles, multipliers) tile the unknowns.
 
 #include <polyfrac/app/simulator.h>
 
@@ -27,6 +28,19 @@ check(const std::string                        &name,
                          std::to_string(at_probe) +
                          " node sides at the probe, expected " +
                          std::to_string(expected_sides) + "."));
+  // The named blocks follow each other and number every unknown once.
+  types::global_dof_index next = 0;
+  for (const DoFBlock &block : level.dofs->blocks())
+    {
+      AssertThrow(block.offset == next,
+                  ExcMessage("The block <" + block.name +
+                             "> does not start where the last one ends."));
+      next += block.size;
+    }
+  AssertThrow(next == level.dofs->n_displacement_dofs() +
+                        dim * level.network->n_fracture_faces(),
+              ExcMessage("The blocks do not cover the displacement and "
+                         "multiplier unknowns."));
   std::cout << dim << "D " << name << ": " << at_probe << " node sides at "
             << probe << "; vertices with k sides:";
   const auto histogram = level.dofs->node_side_histogram();

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/types.h>
 
+#include <polyfrac/dofs/dof_block.h>
+
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
@@ -111,6 +113,15 @@ namespace PolyFrac
     /** Dofs of cell @p c: its node sides, then its bubbles, dim each. */
     std::vector<types::global_dof_index>
     cell_dofs(const unsigned int c) const;
+
+    /**
+     * The named blocks of the displacement and multiplier unknowns, in dof
+     * order: "node-side displacement" (dim per node side), "bubble" (dim
+     * per fracture face) and "multiplier" (dim per fracture face, used by
+     * contact mechanics after the displacement).
+     */
+    std::vector<DoFBlock>
+    blocks() const;
 
     /** Number of vertices with k node sides, for k = 0, 1, 2, ... */
     std::vector<unsigned int>

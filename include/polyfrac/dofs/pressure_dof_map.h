@@ -3,6 +3,8 @@
 
 #include <deal.II/base/types.h>
 
+#include <polyfrac/dofs/dof_block.h>
+
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
@@ -39,15 +41,7 @@ namespace PolyFrac
   {
   public:
     /** A block of unknowns of one field. */
-    struct Block
-    {
-      /** The field, e.g. "cell pressure". */
-      std::string name;
-      /** The first unknown of the block. */
-      types::global_dof_index offset;
-      /** The number of unknowns in the block. */
-      types::global_dof_index size;
-    };
+    using Block = DoFBlock;
 
     /** The blocks of @p mesh cut by @p network with edges @p edges. */
     PressureDoFMap(const PolytopalMesh<dim>   &mesh,
