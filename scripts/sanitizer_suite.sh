@@ -12,10 +12,14 @@ cd "$(dirname "$0")/.."
 # sanitizer wall time (2 shared cores, ctest -j2, load ~9: an upper bound).
 # Selected by name: deal.II 9.4's test macros set no ctest LABELS.
 long_tests=(
-  polyfrac/b3_penny # 134 s (Release 11 s); the next longest take 81 s
+  polyfrac/b3_penny # 134 s (Release 11 s)
   # Release 20 s (the 3D families reach 32^3 hexahedra and 164k tetrahedra);
   # not run in Debug, where it would take several times b3_penny's 134 s.
   physics/flow_convergence_01
+  # Debug + sanitizer wall times measured on 2026-11-22 (2 cores, loaded):
+  polyfrac/b5_closed_crack # 308 s (Release 5 s)
+  polyfrac/b4_mandel # 252 s (Release 11 s; b4_terzaghi stays, 14 s)
+  polyfrac/flow_2d_network_agglomerated_simplices # 179 s (AMG path)
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \

@@ -79,7 +79,7 @@ namespace PolyFrac
         p *= biot_coefficient;
         divergence.Tvmult_add(load, p);
       }
-    if (!fracture_pressure.empty())
+    if (!fracture_pressure.empty() && network.n_fracture_faces() > 0)
       {
         Vector<double> p_f(fracture_pressure.begin(), fracture_pressure.end());
         p_f *= -1.;
@@ -105,6 +105,9 @@ namespace PolyFrac
   std::vector<double>
   BiotCoupling<dim>::normal_jumps(const Vector<double> &u) const
   {
+    // Without fracture faces J has no rows (and deal.II no matrix).
+    if (network.n_fracture_faces() == 0)
+      return {};
     Vector<double> result(normal_jump.m());
     normal_jump.vmult(result, u);
     std::vector<double> jumps(result.begin(), result.end());
