@@ -1,6 +1,6 @@
 #include <polyfrac/app/flow_model.h>
-#include <polyfrac/app/poromechanics_model.h>
 #include <polyfrac/app/mechanics_models.h>
+#include <polyfrac/app/poromechanics_model.h>
 
 #include <iomanip>
 

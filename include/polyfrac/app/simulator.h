@@ -42,9 +42,8 @@ namespace PolyFrac
   public:
     /** Builds the model of a level: make_model() unless a test gives its
      * own. */
-    using ModelFactory = std::function<std::unique_ptr<Model<dim>>(
-      const Parameters &,
-      const LevelDiscretization<dim> &)>;
+    using ModelFactory = std::function<std::unique_ptr<
+      Model<dim>>(const Parameters &, const LevelDiscretization<dim> &)>;
 
     /** The program for the scene of @p prm, which must outlive it, with the
      * models of @p factory. */
