@@ -7,7 +7,9 @@ prm/b4-terzaghi.prm (width h/10) with N/10 x N quadrilaterals or twice as
 many triangles; prints err_pressure, the largest pressure
 over p0, minus 1 (an overshoot means an oscillation), the smallest pressure,
 the number of steps along the column where p rises towards the drained top
-(0 for a monotone profile) and the sign changes of the second difference.
+(0 for a monotone profile) and the sign changes of the second difference,
+without (delta = 0) and with the default pressure stabilisation (Flow/Pressure
+stabilisation, delta = 0.25).
 
 usage: benchmarks/terzaghi_small_steps.py [POLYFRAC] [CELLS ...]
 (run from the repository root; needs python3-meshio)."""
@@ -25,23 +27,26 @@ c = 9.86e-14 / 1e-3 * (1.65e9 + 2 * 1.475e9)  # k/eta * K_v, 1/M = 0
 T_c = 1.0 / c
 p0 = 6e8
 print(f"T_c = h^2/c = {T_c:.4g} s")
-print("cells      dt/T_c   dt [s]      err_pressure  max p/p0 - 1  min p/p0  "
-      "non-monotone steps of p  sign changes of d2p")
-for cell_type, n in [(t, n) for t in ["hypercube", "simplex"] for n in cells]:
+print("cells      delta  dt/T_c   dt [s]      err_pressure  max p/p0 - 1  "
+      "min p/p0  non-monotone steps of p  sign changes of d2p")
+for cell_type, n, delta in [(t, n, d) for t in ["hypercube", "simplex"]
+                            for n in cells for d in [0, 0.25]]:
     for f in [1e-1, 1e-2, 1e-3, 1e-4]:
         dt = f * T_c
-        out = f"/tmp/terzaghi-small-{n}-{f}"
+        out = f"/tmp/terzaghi-small-{cell_type}-{n}-{delta}-{f}"
         run = subprocess.run([polyfrac, "prm/b4-terzaghi.prm",
                         "--set", f"Mesh/Subdivisions={max(n // 10, 1)}, {n}",
                         "--set", f"Mesh/Cell type={cell_type}",
                         "--set", f"Time/Time step={dt}",
                         "--set", f"Time/End time={dt}",
+                        "--set", f"Flow/Pressure stabilisation={delta}",
                         "--set", "Output/Print timings=false",
                         "--set", f"Output/Output directory={out}"],
                        capture_output=True, text=True)
         if run.returncode != 0:
             reason = run.stdout.strip().splitlines()[-1][:160]
-            print(f"{cell_type[0]} {n:5d}  {f:6.0e}  {dt:10.3e}  fails: {reason}")
+            print(f"{cell_type[0]} {n:5d}  {delta:5.2f}  {f:6.0e}  {dt:10.3e}  "
+                  f"fails: {reason}")
             continue
         last = sorted(glob.glob(f"{out}/solution-level-0-*.vtu"))[-1]
         mesh = meshio.read(last)
@@ -63,6 +68,6 @@ for cell_type, n in [(t, n) for t in ["hypercube", "simplex"] for n in cells]:
         changes = int(np.sum(np.diff(np.sign(d2[np.abs(d2) > 1e-9 * p0])) != 0))
         series = open(f"{out}/time_series-level-0.csv").read().splitlines()[-1]
         err = float(series.split(",")[10])
-        print(f"{cell_type[0]} {n:5d}  {f:6.0e}  {dt:10.3e}  {err:12.4e}  "
+        print(f"{cell_type[0]} {n:5d}  {delta:5.2f}  {f:6.0e}  {dt:10.3e}  {err:12.4e}  "
               f"{p.max() / p0 - 1:12.3e}  {p.min() / p0:8.4f}  {rising:4d}  "
               f"{changes:4d}")

@@ -44,6 +44,15 @@ namespace PolyFrac
                  *discretization.geometry,
                  *discretization.network,
                  *discretization.dofs)
+    , energy_balance(prm,
+                     *discretization.geometry,
+                     *discretization.network,
+                     *discretization.dofs,
+                     edges,
+                     pressure_dofs,
+                     flow,
+                     coupling,
+                     elasticity)
     , fixed_stress_coefficient(std::pow(prm.flow.biot_coefficient, 2) /
                                (prm.lame_lambda + 2 * prm.lame_mu / dim))
     , pressure(flow.initial_pressure())
@@ -73,6 +82,7 @@ namespace PolyFrac
   void
   PoromechanicsModel<dim>::use_analytic_solution()
   {
+    check_analytic_box();
     const auto solution = make_analytic_solution(prm);
     const auto displacement =
       std::make_shared<AnalyticDisplacement<dim>>(solution);
@@ -89,6 +99,72 @@ namespace PolyFrac
         for (unsigned int d = 0; d < dim; ++d)
           state.displacement(dofs.node_side_dof(n, d)) = u(d);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicsModel<dim>::check_analytic_box() const
+  {
+    const auto &vertices = discretization.mesh->vertices;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const auto [low, high] =
+          std::minmax_element(vertices.begin(),
+                              vertices.end(),
+                              [d](const auto &a, const auto &b) {
+                                return a[d] < b[d];
+                              });
+        const double lower     = prm.mesh.lower_left[d],
+                     upper     = prm.mesh.upper_right[d];
+        const double tolerance = 1e-10 * (upper - lower);
+        AssertThrow(
+          std::abs((*low)[d] - lower) <= tolerance &&
+            std::abs((*high)[d] - upper) <= tolerance,
+          ExcMessage(
+            "In <" + prm.file_name + ">: Exact solution/Analytic solution = " +
+            prm.exact.analytic_solution +
+            " lives on the box of Mesh/Lower left corner and Upper "
+            "right corner, but the mesh spans [" +
+            std::to_string((*low)[d]) + ", " + std::to_string((*high)[d]) +
+            "] in direction " + std::to_string(d) + " against [" +
+            std::to_string(lower) + ", " + std::to_string(upper) +
+            "]: set the corners to the box of the mesh."));
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  PoromechanicsModel<dim>::energy_residual(const FlowStepData         &data,
+                                           const MechanicalState<dim> &u_new,
+                                           const Vector<double>       &p_new)
+  {
+    elasticity.set_time(data.time);
+    const EnergyTerms terms = energy_balance.terms(
+      state, u_new, pressure, p_new, data, contact != nullptr);
+    const double residual = terms.residual();
+    const double bound =
+      10 * std::max(prm.nonlinear.coupling_tolerance, prm.nonlinear.tolerance);
+    if (std::abs(residual) > bound)
+      {
+        std::ostringstream what;
+        what << "The discrete energy balance of the step to t = " << data.time
+             << " is off by " << residual << " (relative), above its bound "
+             << bound
+             << " (10 x the coupling or Newton tolerance, doc/energy.md §4): "
+                "the step's equations are inconsistent, which is a bug. "
+                "Stored energy "
+             << terms.stored_before << " -> " << terms.stored_after;
+        for (const auto &[name, value] : terms.dissipation)
+          what << "; dissipation (" << name << ") " << value;
+        for (const auto &[name, value] : terms.work)
+          what << "; work (" << name << ") " << value;
+        AssertThrow(false, ExcMessage(what.str() + "."));
+      }
+    return residual;
   }
 
 
@@ -130,6 +206,21 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::vector<double>
+  PoromechanicsModel<dim>::increment_mobility(const double time_step) const
+  {
+    const double b     = prm.flow.biot_coefficient;
+    const double delta = prm.flow.pressure_stabilisation * b * b /
+                         ((prm.lame_lambda + 2 * prm.lame_mu) * time_step);
+    std::vector<double> s(discretization.geometry->cells.size());
+    for (unsigned int c = 0; c < s.size(); ++c)
+      s[c] = delta * std::pow(discretization.geometry->cells[c].diameter, 2);
+    return s;
+  }
+
+
+
+  template <int dim>
   FlowStepData
   PoromechanicsModel<dim>::fixed_stress_data(const double t,
                                              const double time_step,
@@ -150,6 +241,7 @@ namespace PolyFrac
       coupling.volume_changes(start.displacement);
     const std::vector<double> pk = flow.cell_pressures(p_k);
     const std::vector<double> p0 = flow.cell_pressures(p_start);
+    data.increment_mobility      = increment_mobility(time_step);
     for (unsigned int c = 0; c < data.storage.size(); ++c)
       {
         const double measure = discretization.geometry->cells[c].measure;
@@ -224,12 +316,13 @@ namespace PolyFrac
     MechanicalState<dim> u_k       = state;
     Vector<double>       p_k       = pressure;
     double               increment = 0;
+    FlowStepData         data;
     try
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_coupling_iterations;
              ++k)
           {
-            const FlowStepData data =
+            data =
               fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
             Vector<double> p_next;
             flow.solve_step(data, pressure, p_next);
@@ -270,8 +363,10 @@ namespace PolyFrac
         return report;
       }
 
-    state    = u_k;
-    pressure = p_k;
+    elasticity.set_time(t_new);
+    report.energy_residual = energy_residual(data, u_k, p_k);
+    state                  = u_k;
+    pressure               = p_k;
     out << "Step to t = " << t_new << ": " << *report.coupling_iterations
         << " coupling iterations";
     if (contact)

@@ -620,6 +620,15 @@ namespace PolyFrac
                       Patterns::Double(),
                       "Floor > 0 (m) of d_f in the cubic law C_f = d_f^3/12, "
                       "so that a closed fracture still conducts.");
+    prm.declare_entry("Pressure stabilisation",
+                      "0.25",
+                      Patterns::Double(),
+                      "delta >= 0 (poromechanics): the pressure increment "
+                      "diffuses with the extra mobility s_K = delta b^2 "
+                      "h_K^2/((lambda + 2 mu) dt), which stops the pressure "
+                      "oscillations of nodal displacements with cell "
+                      "pressures at small time steps (Rodrigo, Gaspar, Hu, "
+                      "Zikatanov 2016: delta = 1/4); 0 turns it off.");
     prm.declare_entry("Fracture normal transmissibility",
                       "1e-9",
                       Patterns::Double(),
@@ -1158,6 +1167,8 @@ namespace PolyFrac
       bounded("Fracture aperture at contact", 0, infinity, false, ">= 0 (m)");
     flow.minimum_aperture =
       bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
+    flow.pressure_stabilisation =
+      bounded("Pressure stabilisation", 0, infinity, false, ">= 0");
     flow.normal_transmissibility = bounded("Fracture normal transmissibility",
                                            0,
                                            infinity,
@@ -1288,11 +1299,12 @@ namespace PolyFrac
     AssertThrow(name != "mandel" || dim == 2,
                 ExcMessage(where + "Mandel's problem is plane strain: set "
                                    "Dimension = 2."));
-    AssertThrow(mesh.source == "hyper rectangle",
+    AssertThrow(mesh.source == "hyper rectangle" || mesh.source == "gmsh",
                 ExcMessage(where + "the solution lives on the box of "
                                    "Mesh/Lower left corner and Upper right "
                                    "corner: set Mesh/Source = hyper "
-                                   "rectangle."));
+                                   "rectangle, or gmsh with a mesh of that "
+                                   "box."));
     AssertThrow(exact.displacement.empty(),
                 ExcMessage(where + "it gives the exact displacement: leave "
                                    "Exact solution/Displacement empty."));
@@ -1443,11 +1455,14 @@ namespace PolyFrac
                                         "Pressure boundary expression",
                                         "Flux boundary ids",
                                         "Flux boundary expression",
-                                        "HFV stabilisation"})
+                                        "HFV stabilisation",
+                                        "Pressure stabilisation"})
           warn_if_set("Flow", entry);
         warn_if_set("Exact solution", "Matrix pressure");
         warn_if_set("Exact solution", "Fracture pressure");
       }
+    if (model == "flow")
+      warn_if_set("Flow", "Pressure stabilisation");
   }
 
 

@@ -297,13 +297,24 @@ namespace PolyFrac
       {
         if (!active(c, data))
           continue;
-        const auto        &cell   = mesh.cells[c];
-        const double       volume = geometry.cells[c].measure;
-        FullMatrix<double> local  = cell_matrices[c];
-        local *= cell_mobility[c];
+        const auto  &cell   = mesh.cells[c];
+        const double volume = geometry.cells[c].measure;
+        const double increment =
+          data.increment_mobility.empty() ? 0. : data.increment_mobility[c];
+        FullMatrix<double> local = cell_matrices[c];
+        local *= cell_mobility[c] + increment;
         Vector<double> local_rhs(local.m());
+        if (increment > 0)
+          {
+            const auto     local_dofs = cell_dofs(c);
+            Vector<double> p_previous(local_dofs.size());
+            for (unsigned int j = 0; j < local_dofs.size(); ++j)
+              p_previous(j) = previous(local_dofs[j]);
+            cell_matrices[c].vmult(local_rhs, p_previous);
+            local_rhs *= increment;
+          }
         local(0, 0) += volume * data.storage[c] / dt;
-        local_rhs(0) =
+        local_rhs(0) +=
           volume * (matrix_source->value(geometry.cells[c].centroid) +
                     data.cell_rhs[c]) +
           volume * data.storage[c] / dt * previous(dofs.cell_dof(c));
@@ -311,7 +322,7 @@ namespace PolyFrac
           {
             const auto &face = mesh.faces[cell.faces[j]];
             if (face.at_boundary() && listed(flow.flux_ids, face.boundary_id))
-              local_rhs(j + 1) =
+              local_rhs(j + 1) +=
                 -geometry.faces[cell.faces[j]].measure *
                 boundary_flux->value(geometry.faces[cell.faces[j]].centroid);
           }
@@ -430,6 +441,27 @@ namespace PolyFrac
 
   template <int dim>
   std::vector<double>
+  Flow<dim>::increment_fluxes(const unsigned int    c,
+                              const FlowStepData   &data,
+                              const Vector<double> &previous,
+                              const Vector<double> &pressure) const
+  {
+    const auto                local_dofs = cell_dofs(c);
+    const FullMatrix<double> &A          = cell_matrices[c];
+    std::vector<double>       fluxes(local_dofs.size() - 1, 0.);
+    if (data.increment_mobility.empty())
+      return fluxes;
+    for (unsigned int i = 1; i < local_dofs.size(); ++i)
+      for (unsigned int j = 0; j < local_dofs.size(); ++j)
+        fluxes[i - 1] -= data.increment_mobility[c] * A(i, j) *
+                         (pressure(local_dofs[j]) - previous(local_dofs[j]));
+    return fluxes;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
   Flow<dim>::fracture_fluxes(const unsigned int         i,
                              const std::vector<double> &apertures,
                              const Vector<double>      &pressure) const
@@ -471,6 +503,8 @@ namespace PolyFrac
         {
           const double        volume = geometry.cells[c].measure;
           std::vector<double> terms  = cell_fluxes(c, pressure);
+          for (const double F : increment_fluxes(c, data, previous, pressure))
+            terms.push_back(F);
           terms.push_back(
             volume * data.storage[c] / data.time_step *
             (pressure(dofs.cell_dof(c)) - previous(dofs.cell_dof(c))));
@@ -498,6 +532,33 @@ namespace PolyFrac
         residual = std::max(residual, relative(terms));
       }
     return residual;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::cell_sources(const double time) const
+  {
+    matrix_source->set_time(time);
+    std::vector<double> h(geometry.mesh.n_cells());
+    for (unsigned int c = 0; c < h.size(); ++c)
+      h[c] = matrix_source->value(geometry.cells[c].centroid);
+    return h;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::fracture_sources(const double time) const
+  {
+    fracture_source->set_time(time);
+    std::vector<double> h(network.n_fracture_faces());
+    for (unsigned int i = 0; i < h.size(); ++i)
+      h[i] = fracture_source->value(
+        geometry.faces[network.fracture_faces[i].face].centroid);
+    return h;
   }
 
 

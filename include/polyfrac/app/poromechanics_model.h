@@ -12,6 +12,7 @@
 #include <polyfrac/physics/elasticity.h>
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
+#include <polyfrac/postprocessing/energy_balance.h>
 
 #include <memory>
 #include <vector>
@@ -84,6 +85,36 @@ namespace PolyFrac
     void
     use_analytic_solution();
 
+    /**
+     * Throws unless the mesh spans the box of Mesh/Lower left corner and
+     * Upper right corner, on which the analytic solution lives (a gmsh
+     * mesh must be of that box).
+     */
+    void
+    check_analytic_box() const;
+
+    /**
+     * s_K = δ b² h_K²/((λ+2μ) Δt) per cell, the mobility of the pressure
+     * increment (Flow/Pressure stabilisation δ): with nodal displacements
+     * and cell pressures (a P1–P0-like pair) the pressure oscillates at
+     * small Δt in the undrained limit without it (Rodrigo, Gaspar, Hu,
+     * Zikatanov, CMAME 298, 2016, δ = 1/4); it is O(h²/Δt) times the
+     * pressure increment, so it vanishes as h → 0 at fixed Δt.
+     */
+    std::vector<double>
+    increment_mobility(const double time_step) const;
+
+    /**
+     * The residual of the discrete energy balance (doc/energy.md) of the
+     * step from the current state to (@p u_new, @p p_new), whose last flow
+     * solve used @p data; throws, listing the terms, if it exceeds its
+     * bound 10 × max(coupling tolerance, Newton tolerance).
+     */
+    double
+    energy_residual(const FlowStepData         &data,
+                    const MechanicalState<dim> &u_new,
+                    const Vector<double>       &p_new);
+
     /** a_σ: the opening per unit fracture pressure of each face (probe). */
     std::vector<double>
     fracture_compliance();
@@ -121,6 +152,8 @@ namespace PolyFrac
     /** The elasticity operator (the mechanics without fractures, and the
      * compliance probe). */
     Elasticity<dim> elasticity;
+    /** The energy balance of each step (doc/energy.md). */
+    EnergyBalance<dim> energy_balance;
     /** Contact mechanics, when the scene has fractures. */
     std::unique_ptr<ContactMechanics<dim>> contact;
     /** L = b²/(λ + 2μ/d). */

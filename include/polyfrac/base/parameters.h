@@ -253,6 +253,9 @@ namespace PolyFrac
       double aperture_at_contact;
       /** Minimum fracture aperture > 0: the floor of d_f in the cubic law. */
       double minimum_aperture;
+      /** Pressure stabilisation δ ≥ 0: the mobility δ b² h_K²/((λ+2μ) Δt)
+       * of the pressure increment in poromechanics (0: none). */
+      double pressure_stabilisation;
       /** Fracture normal transmissibility Λ_f ≥ 0. */
       double normal_transmissibility;
       /** Matrix source h_m, an expression. */

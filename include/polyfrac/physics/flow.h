@@ -47,6 +47,13 @@ namespace PolyFrac
     /** d_σ: the aperture of fracture face σ (floored at Flow/Minimum
      * fracture aperture in the cubic law). */
     std::vector<double> apertures;
+    /**
+     * s_K ≥ 0 per cell, or empty (none): the mobility of the pressure
+     * increment, a flux s_K (A_K (p − p^{n−1}))_σ added to F_{Kσ}. The
+     * pressure stabilisation of poromechanics sets it (see
+     * PoromechanicsModel); it vanishes for a steady pressure.
+     */
+    std::vector<double> increment_mobility;
   };
 
   /**
@@ -147,6 +154,14 @@ namespace PolyFrac
     std::vector<double>
     cell_fluxes(const unsigned int c, const Vector<double> &pressure) const;
 
+    /** The fluxes s_K (A_K (p − p^{n−1}))_σ of cell @p c of the increment
+     * mobility of @p data (zero if it is empty), outward. */
+    std::vector<double>
+    increment_fluxes(const unsigned int    c,
+                     const FlowStepData   &data,
+                     const Vector<double> &previous,
+                     const Vector<double> &pressure) const;
+
     /** F_{σe} of fracture face @p i with apertures @p apertures, in the
      * order of its edges (outward). */
     std::vector<double>
@@ -164,6 +179,14 @@ namespace PolyFrac
     std::vector<Tensor<1, dim>>
     fracture_velocities(const std::vector<double> &apertures,
                         const Vector<double>      &pressure) const;
+
+    /** h_m(x̄_K, @p time) per cell (Flow/Matrix source). */
+    std::vector<double>
+    cell_sources(const double time) const;
+
+    /** h_f(x̄_σ, @p time) per fracture face (Flow/Fracture source). */
+    std::vector<double>
+    fracture_sources(const double time) const;
 
     /** C_σ/η = max(d, d_min)³/(12 η), the fracture conductivity. */
     double

@@ -1,0 +1,142 @@
+#ifndef polyfrac_postprocessing_energy_balance_h
+#define polyfrac_postprocessing_energy_balance_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/discretization/local_reconstruction.h>
+#include <polyfrac/dofs/dof_map.h>
+#include <polyfrac/dofs/pressure_dof_map.h>
+#include <polyfrac/fractures/fracture_edges.h>
+#include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_geometry.h>
+#include <polyfrac/physics/biot_coupling.h>
+#include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/mechanical_state.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The terms of the discrete energy balance (E) of one poromechanical
+   * step t^{n−1} → t^n (doc/energy.md §2, §4): E^n − E^{n−1} + D^n = W^n.
+   */
+  struct EnergyTerms
+  {
+    /** E^{n−1}: elastic, fluid storage and pressure stabilisation
+     * energies at the start of the step. */
+    double stored_before = 0;
+    /** E^n, the same at its end. */
+    double stored_after = 0;
+    /** The terms of D^n (each ≥ 0 for an exact solution of the step). */
+    std::vector<std::pair<std::string, double>> dissipation;
+    /** The terms of W^n (loads, reactions, sources, boundary data). */
+    std::vector<std::pair<std::string, double>> work;
+
+    /** (E^n − E^{n−1} + D^n − W^n)/S^n, S^n the largest of E^{n−1}, E^n
+     * and the magnitudes of the terms; 0 if S^n = 0 (nothing happens). */
+    double
+    residual() const;
+  };
+
+  /**
+   * Evaluates the discrete energy balance of doc/energy.md from the states
+   * at t^{n−1} and t^n of a converged step: every term separately, from
+   * the same discrete operators as the step (the unconstrained elastic
+   * operator A, the assembled load, BiotCoupling, the HFV fluxes of Flow
+   * and the face jumps of the contact), so that the residual measures how
+   * well the step's equations and contact law hold, not a tolerance of
+   * its own. Its bound is 10 × the coupling tolerance (§4).
+   *
+   * @code
+   *   const EnergyBalance<dim> balance(prm, geometry, network, dofs, edges,
+   *                                    pressure_dofs, flow, coupling,
+   *                                    elasticity);
+   *   elasticity.set_time(t_new);     // the load of step n
+   *   const double r = balance.terms(before, after, p_before, p_after,
+   *                                  data, true).residual();
+   * @endcode
+   */
+  template <int dim>
+  class EnergyBalance
+  {
+  public:
+    /** All arguments must outlive the object; assembles A once. */
+    EnergyBalance(const Parameters           &prm,
+                  const MeshGeometry<dim>    &geometry,
+                  const FractureNetwork<dim> &network,
+                  const DoFMap<dim>          &dofs,
+                  const FractureEdges<dim>   &edges,
+                  const PressureDoFMap<dim>  &pressure_dofs,
+                  const Flow<dim>            &flow,
+                  const BiotCoupling<dim>    &coupling,
+                  const Elasticity<dim>      &elasticity);
+
+    /**
+     * The terms of the step from (@p before, @p p_before) to (@p after,
+     * @p p_after), whose last flow solve used @p data (the time t^n, Δt,
+     * apertures and increment mobility). With @p contact, the multipliers
+     * of @p after are the contact tractions (contact work and friction);
+     * otherwise they are prescribed tractions (work of a load). The load
+     * is that of @p elasticity at the time it was last set to.
+     */
+    EnergyTerms
+    terms(const MechanicalState<dim> &before,
+          const MechanicalState<dim> &after,
+          const Vector<double>       &p_before,
+          const Vector<double>       &p_after,
+          const FlowStepData         &data,
+          const bool                  contact) const;
+
+  private:
+    /** ½ a_h(u^n, u^n) − ½ a_h(u^{n−1}, u^{n−1}), ½ a_h(δu, δu), the
+     * loads and reactions, and the multiplier terms. */
+    void
+    add_mechanics(const MechanicalState<dim> &before,
+                  const MechanicalState<dim> &after,
+                  const Vector<double>       &p_after,
+                  const bool                  contact,
+                  EnergyTerms                &terms) const;
+
+    /** Storage, stabilisation, viscous dissipation, exchange, sources and
+     * boundary data of the matrix and fracture flow. */
+    void
+    add_flow(const Vector<double> &p_before,
+             const Vector<double> &p_after,
+             const FlowStepData   &data,
+             EnergyTerms          &terms) const;
+
+    /** [[v]]_σ of fracture face @p i in the frame (n^+, τ) of the face. */
+    Tensor<1, dim>
+    local_jump(const Vector<double> &v, const unsigned int i) const;
+
+    const Parameters           &prm;
+    const MeshGeometry<dim>    &geometry;
+    const FractureNetwork<dim> &network;
+    const DoFMap<dim>          &dofs;
+    const FractureEdges<dim>   &edges;
+    const PressureDoFMap<dim>  &pressure_dofs;
+    const Flow<dim>            &flow;
+    const BiotCoupling<dim>    &coupling;
+    const Elasticity<dim>      &elasticity;
+    /** The coefficients of [[u]]_σ per fracture face. */
+    std::vector<BlockCoefficients> jumps;
+    /** The Tresca threshold g(x̄_σ) per fracture face (0 unless Tresca). */
+    std::vector<double> tresca_threshold;
+    /** A, the unconstrained elastic operator, and its pattern. */
+    SparsityPattern      sparsity;
+    SparseMatrix<double> stiffness;
+  };
+} // namespace PolyFrac
+
+#endif

@@ -1,0 +1,291 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <polyfrac/base/expressions.h>
+#include <polyfrac/postprocessing/energy_balance.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    /** Whether @p id is among the boundary ids @p ids. */
+    bool
+    listed(const std::vector<unsigned int> &ids, const types::boundary_id id)
+    {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    }
+  } // namespace
+
+
+
+  double
+  EnergyTerms::residual() const
+  {
+    double balance = stored_after - stored_before;
+    double scale   = std::max(std::abs(stored_after), std::abs(stored_before));
+    for (const auto &[name, value] : dissipation)
+      {
+        balance += value;
+        scale = std::max(scale, std::abs(value));
+      }
+    for (const auto &[name, value] : work)
+      {
+        balance -= value;
+        scale = std::max(scale, std::abs(value));
+      }
+    return scale > 0 ? balance / scale : 0.;
+  }
+
+
+
+  template <int dim>
+  EnergyBalance<dim>::EnergyBalance(const Parameters           &prm,
+                                    const MeshGeometry<dim>    &geometry,
+                                    const FractureNetwork<dim> &network,
+                                    const DoFMap<dim>          &dofs,
+                                    const FractureEdges<dim>   &edges,
+                                    const PressureDoFMap<dim>  &pressure_dofs,
+                                    const Flow<dim>            &flow,
+                                    const BiotCoupling<dim>    &coupling,
+                                    const Elasticity<dim>      &elasticity)
+    : prm(prm)
+    , geometry(geometry)
+    , network(network)
+    , dofs(dofs)
+    , edges(edges)
+    , pressure_dofs(pressure_dofs)
+    , flow(flow)
+    , coupling(coupling)
+    , elasticity(elasticity)
+  {
+    const auto g = make_expression<dim>("Contact/Tresca threshold",
+                                        prm.contact.tresca_threshold,
+                                        1,
+                                        prm.constants);
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        jumps.push_back(jump(geometry, dofs, network, i));
+        tresca_threshold.push_back(
+          prm.contact.friction_law == "Tresca" ?
+            g->value(geometry.faces[network.fracture_faces[i].face].centroid) :
+            0.);
+      }
+    const types::global_dof_index n = dofs.n_displacement_dofs();
+    DynamicSparsityPattern        pattern(n);
+    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
+      for (const auto i : dofs.cell_dofs(c))
+        for (const auto j : dofs.cell_dofs(c))
+          pattern.add(i, j);
+    sparsity.copy_from(pattern);
+    stiffness.reinit(sparsity);
+    Vector<double> unused(n);
+    elasticity.assemble_operator(stiffness, unused);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  EnergyBalance<dim>::local_jump(const Vector<double> &v,
+                                 const unsigned int    i) const
+  {
+    Tensor<1, dim> j;
+    for (const auto &[block, w] : jumps[i])
+      for (unsigned int d = 0; d < dim; ++d)
+        j[d] += w * v(dim * block + d);
+    return network.frame(i) * j;
+  }
+
+
+
+  template <int dim>
+  EnergyTerms
+  EnergyBalance<dim>::terms(const MechanicalState<dim> &before,
+                            const MechanicalState<dim> &after,
+                            const Vector<double>       &p_before,
+                            const Vector<double>       &p_after,
+                            const FlowStepData         &data,
+                            const bool                  contact) const
+  {
+    EnergyTerms terms;
+    add_mechanics(before, after, p_after, contact, terms);
+    add_flow(p_before, p_after, data, terms);
+    return terms;
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::add_mechanics(const MechanicalState<dim> &before,
+                                    const MechanicalState<dim> &after,
+                                    const Vector<double>       &p_after,
+                                    const bool                  contact,
+                                    EnergyTerms                &terms) const
+  {
+    const types::global_dof_index n  = dofs.n_displacement_dofs();
+    const Vector<double>         &u0 = before.displacement;
+    const Vector<double>         &u1 = after.displacement;
+    Vector<double>                du(u1);
+    du -= u0;
+    Vector<double> Au0(n), Au1(n), Adu(n);
+    stiffness.vmult(Au0, u0);
+    stiffness.vmult(Au1, u1);
+    stiffness.vmult(Adu, du);
+    terms.stored_before += 0.5 * (u0 * Au0);
+    terms.stored_after += 0.5 * (u1 * Au1);
+    terms.dissipation.emplace_back("implicit Euler (mechanics)",
+                                   0.5 * (du * Adu));
+
+    // The momentum residual R = A u + Σ_σ |σ| λ_σ·[[·]]_σ − F − P
+    // vanishes on the free rows; on the Dirichlet rows it is the reaction.
+    // The Biot and fracture-pressure terms P enter R but not W: they
+    // cancel against the flow equations (doc/energy.md §2).
+    Vector<double> load(n);
+    elasticity.assemble_load(load);
+    terms.work.emplace_back("loads", load * du);
+    Vector<double> R(Au1);
+    R -= load;
+    R -= coupling.pressure_load(flow.cell_pressures(p_after),
+                                prm.flow.biot_coefficient,
+                                flow.fracture_pressures(p_after));
+    double contact_work = 0, friction = 0, traction_work = 0;
+    for (unsigned int i = 0; i < after.multipliers.size(); ++i)
+      {
+        const double measure =
+          geometry.faces[network.fracture_faces[i].face].measure;
+        const Tensor<1, dim> &lambda = after.multipliers[i];
+        for (const auto &[block, w] : jumps[i])
+          for (unsigned int d = 0; d < dim; ++d)
+            R(dim * block + d) += measure * w * lambda[d];
+        if (!contact)
+          {
+            Tensor<1, dim> jump_increment;
+            for (const auto &[block, w] : jumps[i])
+              for (unsigned int d = 0; d < dim; ++d)
+                jump_increment[d] += w * du(dim * block + d);
+            traction_work -= measure * (lambda * jump_increment);
+            continue;
+          }
+        const Tensor<1, dim> local_lambda = network.frame(i) * lambda;
+        const Tensor<1, dim> previous     = local_jump(u0, i);
+        const Tensor<1, dim> increment    = local_jump(du, i);
+        double               slip         = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          slip += increment[d] * increment[d];
+        const double threshold =
+          prm.contact.friction_law == "Coulomb" ?
+            prm.contact.friction_coefficient * local_lambda[0] :
+            tresca_threshold[i];
+        contact_work -= measure * local_lambda[0] * previous[0];
+        friction += measure * threshold * std::sqrt(slip);
+      }
+    if (contact)
+      {
+        terms.dissipation.emplace_back("friction", friction);
+        terms.dissipation.emplace_back("contact", contact_work);
+      }
+    else if (!after.multipliers.empty())
+      terms.work.emplace_back("fracture traction", traction_work);
+    double reactions = 0;
+    for (const auto &line : elasticity.get_constraints().get_lines())
+      reactions += R(line.index) * du(line.index);
+    terms.work.emplace_back("reactions", reactions);
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::add_flow(const Vector<double> &p_before,
+                               const Vector<double> &p_after,
+                               const FlowStepData   &data,
+                               EnergyTerms          &terms) const
+  {
+    const auto               &mesh = geometry.mesh;
+    const double              dt   = data.time_step;
+    const double              invM = prm.flow.inverse_biot_modulus;
+    const Vector<double>      zero(p_after.size());
+    const std::vector<double> h_m = flow.cell_sources(data.time);
+    double storage_dissipation = 0, viscous = 0, stabilisation = 0;
+    double exchange = 0, sources = 0, boundary = 0;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const double volume = geometry.cells[c].measure;
+        const double p0     = p_before(pressure_dofs.cell_dof(c));
+        const double p1     = p_after(pressure_dofs.cell_dof(c));
+        terms.stored_before += 0.5 * volume * invM * p0 * p0;
+        terms.stored_after += 0.5 * volume * invM * p1 * p1;
+        storage_dissipation += 0.5 * volume * invM * (p1 - p0) * (p1 - p0);
+        sources += dt * volume * h_m[c] * p1;
+
+        // Σ_σ F (q_K − q_σ) = q·A p for the fluxes F of p (b_h, and the
+        // increment mobility's form, stored and dissipated).
+        const auto darcy = flow.cell_fluxes(c, p_after);
+        const auto increment =
+          flow.increment_fluxes(c, data, p_before, p_after);
+        const auto  stored_0 = flow.increment_fluxes(c, data, zero, p_before);
+        const auto  stored_1 = flow.increment_fluxes(c, data, zero, p_after);
+        const auto &faces    = mesh.cells[c].faces;
+        for (unsigned int j = 0; j < faces.size(); ++j)
+          {
+            const auto   face_dof = pressure_dofs.face_dof(faces[j], c);
+            const double q0       = p0 - p_before(face_dof),
+                         q1       = p1 - p_after(face_dof);
+            viscous += dt * darcy[j] * q1;
+            stabilisation += 0.5 * dt * increment[j] * (q1 - q0);
+            terms.stored_before += 0.5 * dt * stored_0[j] * q0;
+            terms.stored_after += 0.5 * dt * stored_1[j] * q1;
+            const auto &face = mesh.faces[faces[j]];
+            if (face.at_boundary())
+              boundary -= dt * (darcy[j] + increment[j]) * p_after(face_dof);
+          }
+      }
+
+    const std::vector<double> h_f = flow.fracture_sources(data.time);
+    double                    fracture_viscous = 0;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto  &ff      = network.fracture_faces[i];
+        const double measure = geometry.faces[ff.face].measure;
+        const double p_f     = p_after(pressure_dofs.fracture_face_dof(i));
+        sources += dt * measure * h_f[i] * p_f;
+        for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
+          if (flow.mobility(cell) > 0)
+            {
+              const double jump =
+                p_after(pressure_dofs.face_dof(ff.face, cell)) - p_f;
+              exchange +=
+                dt * measure * prm.flow.normal_transmissibility * jump * jump;
+            }
+        const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);
+        for (unsigned int k = 0; k < fluxes.size(); ++k)
+          {
+            const unsigned int e   = edges.face_edges[i][k].edge;
+            const double       p_e = p_after(pressure_dofs.edge_dof(e));
+            fracture_viscous += dt * fluxes[k] * (p_f - p_e);
+            for (const types::boundary_id id : edges.edges[e].boundary_ids)
+              if (listed(prm.flow.pressure_ids, id))
+                {
+                  boundary -= dt * fluxes[k] * p_e;
+                  break;
+                }
+          }
+      }
+    terms.dissipation.emplace_back("implicit Euler (storage)",
+                                   storage_dissipation);
+    terms.dissipation.emplace_back("pressure stabilisation", stabilisation);
+    terms.dissipation.emplace_back("viscous (matrix)", viscous);
+    terms.dissipation.emplace_back("viscous (fractures)", fracture_viscous);
+    terms.dissipation.emplace_back("exchange", exchange);
+    terms.work.emplace_back("sources", sources);
+    terms.work.emplace_back("boundary data", boundary);
+  }
+
+
+
+  template class EnergyBalance<2>;
+  template class EnergyBalance<3>;
+} // namespace PolyFrac
