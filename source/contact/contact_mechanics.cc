@@ -310,15 +310,26 @@ namespace PolyFrac
 
 
   template <int dim>
-  std::optional<unsigned int>
+  std::string
   ContactMechanics<dim>::linear_step(const Residual    &R,
                                      const unsigned int iteration,
                                      Vector<double>    &step)
   {
+    std::string report;
     if (condensation && FaceCondensation<dim>::condensable(R.faces))
       {
-        return condensation->solve(R.faces, R.vector, step);
+        const auto krylov = condensation->solve(R.faces, R.vector, step);
+        if (krylov.converged)
+          return "condensed step: " + std::to_string(krylov.iterations) + " " +
+                 krylov.method + " iterations";
+        ++n_krylov_fallbacks;
+        report = "saddle-point step (UMFPACK): " + krylov.method +
+                 " did not converge in " + std::to_string(krylov.iterations) +
+                 " iterations on the condensed step";
       }
+    else if (condensation)
+      report = "saddle-point step (UMFPACK): a face's conditions cannot be "
+               "condensed";
 
     SparseMatrix<double> jacobian(sparsity);
     assemble_saddle_point_jacobian(
@@ -338,7 +349,7 @@ namespace PolyFrac
                                                     iteration)));
       }
     direct.vmult(step, rhs);
-    return {};
+    return report;
   }
 
 
@@ -516,22 +527,16 @@ namespace PolyFrac
             continue;
           }
 
-        Vector<double>                    step;
-        const std::optional<unsigned int> cg_iterations =
-          linear_step(R, it, step);
+        Vector<double>    step;
+        const std::string solve_report = linear_step(R, it, step);
         AssertThrow(
           std::all_of(step.begin(),
                       step.end(),
                       [](const double v) { return std::isfinite(v); }),
           ExcMessage(
             undetermined_message("the Newton step is not finite", it)));
-        if (cg_iterations)
-          out << "    condensed step: " << *cg_iterations << " CG iterations"
-              << std::endl;
-        else if (condensation)
-          out << "    saddle-point step (UMFPACK): a Coulomb face slips in "
-                 "contact, its λ_τ = F λ_n needs the normal multiplier"
-              << std::endl;
+        if (!solve_report.empty())
+          out << "    " << solve_report << std::endl;
 
         double alpha = 1;
         if (cycling)
@@ -624,6 +629,11 @@ namespace PolyFrac
               }
           }
       }
+
+    if (n_krylov_fallbacks > 0)
+      out << "  " << n_krylov_fallbacks
+          << " condensed steps fell back to UMFPACK (GMRES did not converge)"
+          << std::endl;
 
     state.displacement.reinit(dofs.n_displacement_dofs());
     for (unsigned int k = 0; k < state.displacement.size(); ++k)

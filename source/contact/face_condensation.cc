@@ -7,46 +7,10 @@
 #include <polyfrac/physics/amg_solver.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace PolyFrac
 {
-  namespace
-  {
-    /**
-     * E = −M_λ,TT^{-1} M_j,TT and e = −M_λ,TT^{-1} r_T on the traction rows
-     * @p rows of @p face (E is |T| × |T|, indexed by position in @p rows).
-     */
-    template <int dim>
-    std::pair<FullMatrix<double>, Vector<double>>
-    traction_response(const FaceLinearisation<dim>    &face,
-                      const std::vector<unsigned int> &rows)
-    {
-      const unsigned int n = rows.size();
-      FullMatrix<double> M_lambda(n, n), M_jump(n, n), E(n, n);
-      Vector<double>     r(n), e(n);
-      for (unsigned int a = 0; a < n; ++a)
-        {
-          r(a) = face.r[rows[a]];
-          for (unsigned int b = 0; b < n; ++b)
-            {
-              M_lambda(a, b) = face.M_lambda[rows[a]][rows[b]];
-              M_jump(a, b)   = face.M_jump[rows[a]][rows[b]];
-            }
-        }
-      if (n > 0)
-        {
-          M_lambda.gauss_jordan();
-          M_lambda.mmult(E, M_jump);
-          E *= -1.;
-          M_lambda.vmult(e, r);
-          e *= -1.;
-        }
-      return {E, e};
-    }
-  } // namespace
-
-
-
   template <int dim>
   FaceCondensation<dim>::FaceCondensation(
     const SparseMatrix<double>                      &stiffness,
@@ -95,28 +59,15 @@ namespace PolyFrac
   {
     for (const auto &face : faces)
       {
-        const std::vector<bool>   kinematic = kinematic_rows(face);
-        std::vector<unsigned int> traction;
+        const std::vector<bool> kinematic = kinematic_rows(face);
+        // A kinematic row prescribes its own jump component only.
         for (unsigned int k = 0; k < dim; ++k)
-          {
-            if (!kinematic[k])
-              {
-                traction.push_back(k);
-                continue;
-              }
-            // A kinematic row prescribes its own jump component only.
+          if (kinematic[k])
             for (unsigned int c = 0; c < dim; ++c)
               if ((c == k) == (face.M_jump[k][c] == 0.))
                 return false;
-          }
-        // Traction rows must not see kinematic components, and their
-        // response E must be symmetric.
-        for (const unsigned int t : traction)
-          for (unsigned int k = 0; k < dim; ++k)
-            if (kinematic[k] &&
-                (face.M_lambda[t][k] != 0. || face.M_jump[t][k] != 0.))
-              return false;
-        const FullMatrix<double> E = traction_response(face, traction).first;
+        // The traction response E must be symmetric.
+        const FullMatrix<double> E = local_rows(face).E;
         for (unsigned int a = 0; a < E.m(); ++a)
           for (unsigned int b = 0; b < a; ++b)
             if (std::abs(E(a, b) - E(b, a)) >
@@ -124,6 +75,42 @@ namespace PolyFrac
               return false;
       }
     return true;
+  }
+
+
+
+  template <int dim>
+  FaceLinearisation<dim>
+  FaceCondensation<dim>::slip_aligned(const FaceLinearisation<dim> &face)
+  {
+    if (dim < 3 || face.M_lambda[0].norm() > 0.)
+      return face;
+    // c = M_λ[τ][n] = −F b̂; R turns (τ_1, τ_2) to (ĉ, ĉ^⊥).
+    Tensor<1, dim> c;
+    for (unsigned int d = 1; d < dim; ++d)
+      c[d] = face.M_lambda[d][0];
+    if (c.norm() == 0.)
+      return face;
+    c /= c.norm();
+    Tensor<2, dim> R;
+    R[0][0]          = 1;
+    R[1]             = c;
+    R[2][1]          = -c[2];
+    R[2][2]          = c[1];
+    auto aligned     = face;
+    aligned.frame    = R * face.frame;
+    aligned.r        = R * face.r;
+    aligned.M_lambda = R * face.M_lambda * transpose(R);
+    aligned.M_jump   = R * face.M_jump * transpose(R);
+    // b̂ is an eigenvector of P and the coupling lies along it: what the
+    // rotation leaves off the diagonal of the tangential block and in the
+    // b̂^⊥ row's normal column is round-off.
+    for (auto *M : {&aligned.M_lambda, &aligned.M_jump})
+      {
+        (*M)[1][2] = (*M)[2][1] = 0.;
+        (*M)[2][0]              = 0.;
+      }
+    return aligned;
   }
 
 
@@ -145,12 +132,47 @@ namespace PolyFrac
   typename FaceCondensation<dim>::LocalRows
   FaceCondensation<dim>::local_rows(const FaceLinearisation<dim> &face)
   {
+    // With K the kinematic rows and d[[u]]~_K = −r_K/M_j,KK prescribed:
+    // E = −M_λ,TT^{-1} M_j,TT, C = −M_λ,TT^{-1} M_λ,TK and
+    // e = −M_λ,TT^{-1} (r_T + M_j,TK d[[u]]~_K).
     LocalRows rows;
     rows.kinematic = kinematic_rows(face);
     for (unsigned int k = 0; k < dim; ++k)
       if (!rows.kinematic[k])
         rows.traction.push_back(k);
-    std::tie(rows.E, rows.e) = traction_response(face, rows.traction);
+    const std::vector<unsigned int> &T = rows.traction;
+    const unsigned int               n = T.size();
+    FullMatrix<double> M_lambda(n, n), M_jump(n, n), M_kinematic(n, dim);
+    Vector<double>     r(n);
+    for (unsigned int a = 0; a < n; ++a)
+      {
+        r(a) = face.r[T[a]];
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            M_lambda(a, b) = face.M_lambda[T[a]][T[b]];
+            M_jump(a, b)   = face.M_jump[T[a]][T[b]];
+          }
+        for (unsigned int k = 0; k < dim; ++k)
+          if (rows.kinematic[k])
+            {
+              M_kinematic(a, k) = face.M_lambda[T[a]][k];
+              r(a) += face.M_jump[T[a]][k] * (-face.r[k] / face.M_jump[k][k]);
+            }
+      }
+    rows.E.reinit(n, n);
+    rows.e.reinit(n);
+    rows.C.reinit(n, dim);
+    if (n > 0)
+      {
+        M_lambda.gauss_jordan();
+        M_lambda.mmult(rows.E, M_jump);
+        rows.E *= -1.;
+        M_lambda.vmult(rows.e, r);
+        rows.e *= -1.;
+        M_lambda.mmult(rows.C, M_kinematic);
+        rows.C *= -1.;
+      }
+    rows.coupled = rows.C.frobenius_norm() > 0.;
     rows.jump_variable.resize(dim, false);
     for (unsigned int a = 0; a < rows.traction.size(); ++a)
       for (unsigned int b = 0; b < rows.traction.size(); ++b)
@@ -227,6 +249,61 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::map<types::global_dof_index, double>
+  FaceCondensation<dim>::reduced_functional(
+    const std::map<types::global_dof_index, double> &functional) const
+  {
+    std::map<types::global_dof_index, double> reduced;
+    for (const auto &[dof, coefficient] : functional)
+      for (auto entry = elimination.begin(dof); entry != elimination.end(dof);
+           ++entry)
+        reduced[entry->column()] += coefficient * entry->value();
+    return reduced;
+  }
+
+
+
+  template <int dim>
+  std::map<types::global_dof_index, double>
+  FaceCondensation<dim>::traction_coupling(const FaceLinearisation<dim> &face,
+                                           const LocalRows              &rows,
+                                           const unsigned int            i,
+                                           const unsigned int k) const
+  {
+    std::map<types::global_dof_index, double> functional;
+    for (unsigned int a = 0; a < rows.traction.size(); ++a)
+      if (rows.C(a, k) != 0.)
+        for (const auto &[block, w] : jumps[i])
+          for (unsigned int c = 0; c < dim; ++c)
+            functional[dim * block + c] +=
+              rows.C(a, k) * w * face.frame[rows.traction[a]][c];
+    return reduced_functional(functional);
+  }
+
+
+
+  template <int dim>
+  std::map<types::global_dof_index, double>
+  FaceCondensation<dim>::bubble_momentum(const FaceLinearisation<dim> &face,
+                                         const unsigned int            i,
+                                         const unsigned int            k) const
+  {
+    const types::global_dof_index             n_u = dofs.n_displacement_dofs();
+    std::map<types::global_dof_index, double> functional;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        const types::global_dof_index row = dofs.bubble_dof(i, c);
+        for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
+             ++entry)
+          if (entry->column() < n_u)
+            functional[entry->column()] += face.frame[k][c] * entry->value();
+      }
+    return functional;
+  }
+
+
+
+  template <int dim>
   void
   FaceCondensation<dim>::make_reduced_operator(
     const std::vector<FaceLinearisation<dim>> &faces,
@@ -252,7 +329,26 @@ namespace PolyFrac
       for (const unsigned int t : rows[i].traction)
         reduced_dof[dofs.bubble_dof(i, t)] = true;
 
+    // The coupling −(1/w_b) (G^T C_k)(Z^T A q_k)^T of the Coulomb slip faces.
+    std::vector<
+      std::tuple<types::global_dof_index, types::global_dof_index, double>>
+      coupling;
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      if (rows[i].coupled)
+        for (unsigned int k = 0; k < dim; ++k)
+          if (rows[i].kinematic[k])
+            {
+              const auto traction = traction_coupling(faces[i], rows[i], i, k);
+              const auto momentum =
+                reduced_functional(bubble_momentum(faces[i], i, k));
+              for (const auto &[row, u] : traction)
+                for (const auto &[column, v] : momentum)
+                  coupling.emplace_back(row, column, -u * v / bubble_weight(i));
+            }
+
     DynamicSparsityPattern dsp(n_u);
+    for (const auto &[row, column, value] : coupling)
+      dsp.add(row, column);
     for (types::global_dof_index row = 0; row < n_u; ++row)
       {
         dsp.add(row, row);
@@ -293,19 +389,26 @@ namespace PolyFrac
                           dofs.bubble_dof(i, T[b]),
                           faces[i].measure * rows[i].E(a, b));
       }
+    for (const auto &[row, column, value] : coupling)
+      reduced.add(row, column, value);
     matrix.reinit(reduced);
   }
 
 
 
   template <int dim>
-  unsigned int
-  FaceCondensation<dim>::solve(const std::vector<FaceLinearisation<dim>> &faces,
-                               const Vector<double> &residual,
-                               Vector<double>       &step)
+  typename FaceCondensation<dim>::KrylovSolve
+  FaceCondensation<dim>::solve(
+    const std::vector<FaceLinearisation<dim>> &linearisation,
+    const Vector<double>                      &residual,
+    Vector<double>                            &step)
   {
-    Assert(condensable(faces), ExcInternalError());
+    Assert(condensable(linearisation), ExcInternalError());
     const types::global_dof_index n_u = dofs.n_displacement_dofs();
+
+    std::vector<FaceLinearisation<dim>> faces;
+    for (const auto &face : linearisation)
+      faces.push_back(slip_aligned(face));
 
     std::vector<LocalRows> rows;
     for (const auto &face : faces)
@@ -320,6 +423,26 @@ namespace PolyFrac
     Vector<double> shifted(residual.size()), rhs(n_u);
     stiffness.vmult(shifted, offset);
     shifted += residual;
+    Vector<double> coupling_rhs(n_u);
+    bool           symmetric = true;
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      if (rows[i].coupled)
+        {
+          // The known part of the kinematic reaction, q_k^T (R + A z_0),
+          // moved to the right-hand side: +(1/w_b) G^T C_k q_k^T (R + A z_0).
+          symmetric = false;
+          for (unsigned int k = 0; k < dim; ++k)
+            if (rows[i].kinematic[k])
+              {
+                double known = 0;
+                for (unsigned int c = 0; c < dim; ++c)
+                  known +=
+                    faces[i].frame[k][c] * shifted(dofs.bubble_dof(i, c));
+                for (const auto &[dof, u] :
+                     traction_coupling(faces[i], rows[i], i, k))
+                  coupling_rhs(dof) += u * known / bubble_weight(i);
+              }
+        }
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
         Tensor<1, dim> e;
@@ -332,13 +455,24 @@ namespace PolyFrac
       }
     elimination.Tvmult(rhs, shifted);
     rhs *= -1.;
+    rhs += coupling_rhs;
 
-    Vector<double>     y(n_u);
-    const unsigned int iterations =
-      solve_cg_amg(matrix, y, rhs, dofs, vertices, solver);
+    Vector<double> y(n_u);
+    KrylovSolve    krylov{"CG", 0, true};
+    if (symmetric)
+      krylov.iterations = solve_cg_amg(matrix, y, rhs, dofs, vertices, solver);
+    else
+      {
+        krylov.method = "GMRES";
+        std::tie(krylov.iterations, krylov.converged) =
+          solve_gmres_amg(matrix, y, rhs, dofs, vertices, solver);
+        if (!krylov.converged)
+          return krylov;
+      }
 
-    // du = Z y + z_0; the traction multipliers dλ̃_T = E d[[u]]~_T + e, the
-    // kinematic ones from the bubble rows |σ| w_b dλ = −(R + A du)_b.
+    // du = Z y + z_0; the kinematic multipliers from the bubble rows
+    // |σ| w_b dλ = −(R + A du)_b, then the traction ones dλ̃_T =
+    // E d[[u]]~_T + e + C dλ̃_K.
     step.reinit(residual.size());
     elimination.vmult(step, y);
     step += offset;
@@ -367,12 +501,15 @@ namespace PolyFrac
               if (rows[i].E(a, b) != 0.)
                 multiplier[T[a]] +=
                   rows[i].E(a, b) * y(dofs.bubble_dof(i, T[b]));
+            for (unsigned int k = 0; k < dim; ++k)
+              if (rows[i].kinematic[k])
+                multiplier[T[a]] += rows[i].C(a, k) * multiplier[k];
           }
         const Tensor<1, dim> global = transpose(Q) * multiplier;
         for (unsigned int c = 0; c < dim; ++c)
           step(dofs.multiplier_dof(i, c)) = global[c];
       }
-    return iterations;
+    return krylov;
   }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <polyfrac/physics/amg_solver.h>
@@ -65,6 +66,53 @@ namespace PolyFrac
         }
       return modes;
     }
+
+
+
+    /**
+     * The Krylov space of GMRES before a restart: 50 vectors of the reduced
+     * operator's size.
+     */
+    constexpr unsigned int gmres_restart = 50;
+
+
+
+    /**
+     * Initialises @p amg (ML smoothed aggregation) for @p matrix with the
+     * rigid-body modes of the node sides as near null space.
+     */
+    template <int dim>
+    void
+    initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
+                   const TrilinosWrappers::SparseMatrix &matrix,
+                   const DoFMap<dim>                    &dofs,
+                   const std::vector<Point<dim>>        &vertices)
+    {
+      // AdditionalData has no room for rotations in deal.II 9.4: let it fill
+      // the ML list (smoother, aggregation) with no constant modes, then
+      // set the null space by hand. ML reads the vectors during initialize(),
+      // so the multivector must outlive it.
+      //
+      // "PDE equations" = dim makes ML aggregate whole dim-blocks of rows
+      // (a node side or a bubble) instead of single rows. Without it, each
+      // scalar aggregate carries all 3 (2D) or 6 (3D) modes and the 3D coarse
+      // operator grows to several times the fine one, which costs more than
+      // the rotations save in iterations.
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 0.02;
+      Teuchos::ParameterList              parameters;
+      std::unique_ptr<Epetra_MultiVector> modes;
+      data.set_parameters(parameters, modes, matrix.trilinos_matrix());
+      modes = rigid_body_modes(dofs, vertices, matrix.trilinos_matrix());
+      parameters.set("null space: type", "pre-computed");
+      parameters.set("null space: dimension", modes->NumVectors());
+      parameters.set("null space: vectors", modes->Values());
+      parameters.set("PDE equations", static_cast<int>(dim));
+      amg.initialize(matrix, parameters);
+    }
   } // namespace
 
 
@@ -78,32 +126,8 @@ namespace PolyFrac
                const std::vector<Point<dim>>        &vertices,
                const Parameters::SolverData         &solver)
   {
-    // AdditionalData has no room for rotations in deal.II 9.4: let it fill
-    // the ML list (smoother, aggregation) with no constant modes, then
-    // set the null space by hand. ML reads the vectors during initialize(),
-    // so the multivector must outlive it; it lives to the end of the solve.
-    //
-    // "PDE equations" = dim makes ML aggregate whole dim-blocks of rows
-    // (a node side or a bubble) instead of single rows. Without it, each
-    // scalar aggregate carries all 3 (2D) or 6 (3D) modes and the 3D coarse
-    // operator grows to several times the fine one, which costs more than
-    // the rotations save in iterations.
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = false;
-    data.smoother_sweeps       = 2;
-    data.aggregation_threshold = 0.02;
-    Teuchos::ParameterList              parameters;
-    std::unique_ptr<Epetra_MultiVector> modes;
-    data.set_parameters(parameters, modes, matrix.trilinos_matrix());
-    modes = rigid_body_modes(dofs, vertices, matrix.trilinos_matrix());
-    parameters.set("null space: type", "pre-computed");
-    parameters.set("null space: dimension", modes->NumVectors());
-    parameters.set("null space: vectors", modes->Values());
-    parameters.set("PDE equations", static_cast<int>(dim));
-
     TrilinosWrappers::PreconditionAMG amg;
-    amg.initialize(matrix, parameters);
+    initialize_amg(amg, matrix, dofs, vertices);
     SolverControl            control(solver.max_iterations,
                           solver.tolerance * rhs.l2_norm());
     SolverCG<Vector<double>> cg(control);
@@ -127,6 +151,37 @@ namespace PolyFrac
 
 
 
+  template <int dim>
+  std::pair<unsigned int, bool>
+  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                  Vector<double>                       &x,
+                  const Vector<double>                 &rhs,
+                  const DoFMap<dim>                    &dofs,
+                  const std::vector<Point<dim>>        &vertices,
+                  const Parameters::SolverData         &solver)
+  {
+    TrilinosWrappers::PreconditionAMG amg;
+    initialize_amg(amg, matrix, dofs, vertices);
+    // Right preconditioning, so that the tolerance bounds the residual of
+    // the system itself, like CG's.
+    SolverControl               control(solver.max_iterations,
+                          solver.tolerance * rhs.l2_norm());
+    SolverGMRES<Vector<double>> gmres(
+      control,
+      SolverGMRES<Vector<double>>::AdditionalData(gmres_restart, true));
+    try
+      {
+        gmres.solve(matrix, x, rhs, amg);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        return {control.last_step(), false};
+      }
+    return {control.last_step(), true};
+  }
+
+
+
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
@@ -141,4 +196,18 @@ namespace PolyFrac
                const DoFMap<3> &,
                const std::vector<Point<3>> &,
                const Parameters::SolverData &);
+  template std::pair<unsigned int, bool>
+  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &,
+                  Vector<double> &,
+                  const Vector<double> &,
+                  const DoFMap<2> &,
+                  const std::vector<Point<2>> &,
+                  const Parameters::SolverData &);
+  template std::pair<unsigned int, bool>
+  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &,
+                  Vector<double> &,
+                  const Vector<double> &,
+                  const DoFMap<3> &,
+                  const std::vector<Point<3>> &,
+                  const Parameters::SolverData &);
 } // namespace PolyFrac

@@ -68,8 +68,10 @@ namespace PolyFrac
    * Linear solves: UMFPACK on the saddle-point Jacobian (Linear
    * solver/Method = direct), or, with Method = AMG, the step condensed face
    * by face (FaceCondensation: no multiplier unknowns, symmetric positive
-   * definite) and solved by CG + AMG; a Coulomb step in which a face slips
-   * in contact cannot be condensed and falls back to UMFPACK.
+   * definite) and solved by CG + AMG; in a Coulomb step in which a face
+   * slips in contact the condensed operator is non-symmetric and GMRES +
+   * AMG solves it, with UMFPACK on the saddle point when GMRES does not
+   * converge (reported on the step's line).
    *
    * Nested iteration: given the multipliers and states of a coarser level
    * (start_from()), each face takes those of the nearest coarse face
@@ -180,11 +182,13 @@ namespace PolyFrac
 
     /**
      * The Newton step for @p R: condensed face by face and solved by
-     * AMG-preconditioned CG (Linear solver/Method = AMG, when every face
-     * allows it), else UMFPACK on the saddle point. Returns the number of
-     * CG iterations of a condensed step.
+     * AMG-preconditioned CG, or GMRES when a Coulomb face slips in contact
+     * (Linear solver/Method = AMG, when every face allows it), else
+     * UMFPACK on the saddle point, also when GMRES does not converge.
+     * Returns how the step was solved (one line; empty for Method =
+     * direct).
      */
-    std::optional<unsigned int>
+    std::string
     linear_step(const Residual    &R,
                 const unsigned int iteration,
                 Vector<double>    &step);
@@ -248,6 +252,8 @@ namespace PolyFrac
     unsigned int                        total_iterations = 0;
     /** How often β was divided by 10 on active-set cycling. */
     unsigned int n_beta_reductions = 0;
+    /** How many condensed steps fell back to UMFPACK (GMRES failed). */
+    unsigned int n_krylov_fallbacks = 0;
   };
 } // namespace PolyFrac
 

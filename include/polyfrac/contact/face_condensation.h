@@ -15,6 +15,7 @@
 #include <polyfrac/dofs/dof_map.h>
 
 #include <map>
+#include <string>
 #include <vector>
 
 namespace PolyFrac
@@ -53,9 +54,19 @@ namespace PolyFrac
    * recovered from the bubble rows of the momentum equation, |σ| w_b dλ =
    * −(R + A du)_b.
    *
-   * A Coulomb face that slips in contact couples λ_τ to the normal
-   * reaction λ_n (M_λ[τ][n] ≠ 0) and cannot be condensed this way;
-   * condensable() says so, and the caller uses the saddle point.
+   * A Coulomb face that slips in contact has a kinematic normal row and
+   * traction rows that also see the normal reaction (M_λ[τ][n] ≠ 0, λ_τ =
+   * F λ_n): dλ̃_T = E d[[u]]~_T + e + C dλ̃_K, with C = −M_λ,TT^{-1}
+   * M_λ,TK on the kinematic rows K (and the prescribed d[[u]]~_K in e).
+   * The kinematic reaction comes from the bubble rows of the momentum
+   * equation, which the null-space method leaves out: |σ| w_b dλ̃_k =
+   * −q_k^T (R + A du), with q_k the bubble's motion along row k of Q. Its
+   * substitution adds, per such face, −(1/w_b) (G^T C_k)(Z^T A q_k)^T to
+   * the reduced operator (G: the traction jump components of Z), a sparse
+   * coupling of the face's jump dofs to the dofs of its two cells that
+   * makes the operator non-symmetric. That operator is solved by GMRES
+   * preconditioned with the same AMG; the caller falls back to the saddle
+   * point when GMRES does not converge.
    */
   template <int dim>
   class FaceCondensation
@@ -73,23 +84,41 @@ namespace PolyFrac
                      const std::vector<Point<dim>>                   &vertices,
                      const Parameters::SolverData                    &solver);
 
+    /** How a condensed step was solved. */
+    struct KrylovSolve
+    {
+      /**
+       * "CG" when the reduced operator is symmetric, "GMRES" when a
+       * Coulomb face slips in contact.
+       */
+      std::string method;
+      /** The number of iterations. */
+      unsigned int iterations;
+      /**
+       * Whether the solver reached `Linear solver/Tolerance`; only GMRES
+       * may stop short (CG throws), and the step is then invalid.
+       */
+      bool converged;
+    };
+
     /** Whether every face can be condensed (see the class documentation). */
     static bool
     condensable(const std::vector<FaceLinearisation<dim>> &faces);
 
     /**
      * The Newton step (du, dλ) for the residual @p residual of the
-     * saddle-point system. Returns the number of CG iterations.
+     * saddle-point system with the face conditions @p linearisation, and
+     * how it was solved.
      */
-    unsigned int
-    solve(const std::vector<FaceLinearisation<dim>> &faces,
+    KrylovSolve
+    solve(const std::vector<FaceLinearisation<dim>> &linearisation,
           const Vector<double>                      &residual,
           Vector<double>                            &step);
 
   private:
     /**
      * The local rows of a face: kinematic or traction; on the traction rows
-     * T, the response dλ̃_T = E d[[u]]~_T + e; and the rows whose jump
+     * T, the response dλ̃_T = E d[[u]]~_T + e + C dλ̃; the rows whose jump
      * component is itself the reduced dof (those with E ≠ 0, i.e. 3D slip).
      */
     struct LocalRows
@@ -98,7 +127,11 @@ namespace PolyFrac
       std::vector<unsigned int> traction;
       FullMatrix<double>        E;
       Vector<double>            e;
-      std::vector<bool>         jump_variable;
+      /** |T| × dim, nonzero only in the columns of kinematic rows. */
+      FullMatrix<double> C;
+      std::vector<bool>  jump_variable;
+      /** Whether C ≠ 0 (a Coulomb face slipping in contact). */
+      bool coupled;
     };
 
     static std::vector<bool>
@@ -106,6 +139,19 @@ namespace PolyFrac
 
     static LocalRows
     local_rows(const FaceLinearisation<dim> &face);
+
+    /**
+     * @p face, on a 3D Coulomb face slipping in contact with its tangential
+     * axes turned to the slip direction b̂ (along the column M_λ[τ][n] =
+     * −F b̂) and b̂^⊥; otherwise unchanged. In these axes M_λ,TT = I − P is
+     * diagonal and the coupling to λ_n lives in the b̂ row only. In the
+     * face's own axes the inverse of M_λ,TT spreads round-off divided by
+     * its b̂^⊥ eigenvalue 1 − g/|b_τ| into C and E, and that eigenvalue is
+     * round-off itself at the first Newton step of a load step (b_τ = λ_τ
+     * with |λ_τ| = g on the faces that slipped in the previous one).
+     */
+    static FaceLinearisation<dim>
+    slip_aligned(const FaceLinearisation<dim> &face);
 
     /** The bubble's coefficient w_b in [[u]]_σ of face @p i. */
     double
@@ -117,7 +163,32 @@ namespace PolyFrac
                      const std::vector<LocalRows>              &rows,
                      Vector<double>                            &offset);
 
-    /** @p matrix = Z^T A Z + Σ_σ |σ| E (on the jump variables). */
+    /** The functional @p functional (dof → coefficient) composed with Z. */
+    std::map<types::global_dof_index, double>
+    reduced_functional(
+      const std::map<types::global_dof_index, double> &functional) const;
+
+    /**
+     * The reduced functional of the coupled traction rows of face @p i
+     * to its kinematic reaction k, G^T C_k (jump components of Z).
+     */
+    std::map<types::global_dof_index, double>
+    traction_coupling(const FaceLinearisation<dim> &face,
+                      const LocalRows              &rows,
+                      const unsigned int            i,
+                      const unsigned int            k) const;
+
+    /** The momentum row of the bubble of face @p i along row k of Q, q_k^T A.
+     */
+    std::map<types::global_dof_index, double>
+    bubble_momentum(const FaceLinearisation<dim> &face,
+                    const unsigned int            i,
+                    const unsigned int            k) const;
+
+    /**
+     * @p matrix = Z^T A Z + Σ_σ |σ| E (on the jump variables) + the
+     * coupling of the Coulomb slip faces.
+     */
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
                           const std::vector<LocalRows>              &rows,

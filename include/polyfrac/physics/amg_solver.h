@@ -8,6 +8,7 @@
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/dofs/dof_map.h>
 
+#include <utility>
 #include <vector>
 
 namespace PolyFrac
@@ -35,6 +36,24 @@ namespace PolyFrac
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
                const Parameters::SolverData         &solver);
+
+  /**
+   * Solves the non-symmetric @p matrix @p x = @p rhs (the condensed Newton
+   * step of contact mechanics when a Coulomb face slips in contact) by
+   * restarted GMRES, right-preconditioned with the AMG of solve_cg_amg()
+   * built on @p matrix itself. Returns the number of iterations and
+   * whether GMRES reached `Linear solver/Tolerance` (relative to |rhs|)
+   * within `Linear solver/Maximum iterations`; the caller decides what
+   * to do otherwise.
+   */
+  template <int dim>
+  std::pair<unsigned int, bool>
+  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                  Vector<double>                       &x,
+                  const Vector<double>                 &rhs,
+                  const DoFMap<dim>                    &dofs,
+                  const std::vector<Point<dim>>        &vertices,
+                  const Parameters::SolverData         &solver);
 } // namespace PolyFrac
 
 #endif
