@@ -300,14 +300,25 @@ CASES = {
             "Exact solution", Analytic_solution="mandel",
             Analytic_load="6e8")},
         base=BASE_3D),
-    "analytic_solution_gmsh": case(
-        "`Analytic solution = terzaghi` on a gmsh mesh",
-        ["the solution lives on the box of Mesh/Lower left corner and Upper "
-         "right corner: set Mesh/Source = hyper rectangle"],
+    "analytic_solution_gmsh_box": case(
+        "`Analytic solution = terzaghi` on a gmsh mesh of another box",
+        ["lives on the box of Mesh/Lower left corner and Upper right corner, "
+         "but the mesh spans [0.000000, 2.000000] in direction 0 against "
+         "[-1.000000, 1.000000]: set the corners to the box of the mesh"],
         files={"scene.prm": section("Model", Model="poromechanics") + section(
-            "Mesh", Source="gmsh", File_name="box.msh") + section(
+            "Mesh", Source="gmsh", File_name="box.geo") + section(
+            "Boundary conditions", Dirichlet_boundary_ids="1") + section(
             "Exact solution", Analytic_solution="terzaghi",
-            Analytic_load="1"), "box.msh": "$MeshFormat\n"}),
+            Analytic_load="1"),
+            "box.geo": "Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
+                       "Point(3) = {2, 2, 0, 1};\nPoint(4) = {0, 2, 0, 1};\n"
+                       "Line(1) = {1, 2};\nLine(2) = {2, 3};\n"
+                       "Line(3) = {3, 4};\nLine(4) = {4, 1};\n"
+                       "Curve Loop(1) = {1, 2, 3, 4};\n"
+                       "Plane Surface(1) = {1};\n"
+                       "Physical Curve(1) = {1, 2, 3, 4};\n"
+                       "Physical Surface(100) = {1};\n"},
+        stage="level"),
     "analytic_solution_and_displacement": case(
         "`Analytic solution = terzaghi` and an exact Displacement",
         ["it gives the exact displacement: leave Exact solution/Displacement "
