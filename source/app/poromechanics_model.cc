@@ -1,4 +1,5 @@
 #include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/base/anderson_acceleration.h>
 #include <polyfrac/postprocessing/analytic_solutions.h>
 
 #include <algorithm>
@@ -317,6 +318,7 @@ namespace PolyFrac
     Vector<double>       p_k       = pressure;
     double               increment = 0;
     FlowStepData         data;
+    AndersonAcceleration anderson(prm.nonlinear.anderson_depth);
     try
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_coupling_iterations;
@@ -324,14 +326,15 @@ namespace PolyFrac
           {
             data =
               fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
-            Vector<double> p_next;
-            flow.solve_step(data, pressure, p_next);
+            Vector<double> image;
+            flow.solve_step(data, pressure, image);
+            const Vector<double> p_next = anderson.next(p_k, image);
             MechanicalState<dim> u_next;
             *report.newton_iterations +=
               solve_mechanics(t_new, p_next, state, u_next);
             increment =
               relative_increment(u_next.displacement, u_k.displacement) +
-              relative_increment(p_next, p_k);
+              relative_increment(image, p_k);
             u_k                        = u_next;
             p_k                        = p_next;
             report.coupling_iterations = k;
@@ -367,11 +370,6 @@ namespace PolyFrac
     report.energy_residual = energy_residual(data, u_k, p_k);
     state                  = u_k;
     pressure               = p_k;
-    out << "Step to t = " << t_new << ": " << *report.coupling_iterations
-        << " coupling iterations";
-    if (contact)
-      out << ", " << *report.newton_iterations << " Newton iterations";
-    out << std::endl;
 
     const auto &network  = *discretization.network;
     const auto &geometry = *discretization.geometry;
@@ -400,6 +398,13 @@ namespace PolyFrac
         report.mean_aperture          = aperture / area;
         report.mean_fracture_pressure = mean_p / area;
       }
+    out << "Step to t = " << t_new << ": " << *report.coupling_iterations
+        << " coupling iterations";
+    if (contact)
+      out << ", " << *report.newton_iterations << " Newton iterations; faces "
+          << *report.n_open << " open, " << *report.n_stick << " stick, "
+          << *report.n_slip << " slip";
+    out << std::endl;
     return report;
   }
 

@@ -708,6 +708,13 @@ namespace PolyFrac
                       "Model = poromechanics: fixed-stress iterations per "
                       "time step before the step counts as failed (it is "
                       "then halved and retried).");
+    prm.declare_entry("Anderson depth",
+                      "5",
+                      Patterns::Integer(0),
+                      "Model = poromechanics: the depth m of the Anderson "
+                      "acceleration of the fixed-stress iteration (the last "
+                      "m differences of the pressure iterates); 0: the plain "
+                      "fixed-stress iteration.");
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");
@@ -1098,6 +1105,7 @@ namespace PolyFrac
     nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
     nonlinear.max_coupling_iterations =
       prm->get_integer("Maximum coupling iterations");
+    nonlinear.anderson_depth = prm->get_integer("Anderson depth");
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");

@@ -288,6 +288,8 @@ namespace PolyFrac
       double coupling_tolerance;
       /** Maximum coupling iterations per time step. */
       unsigned int max_coupling_iterations;
+      /** Anderson depth m ≥ 0 of the fixed-stress iteration (0: plain). */
+      unsigned int anderson_depth;
     } nonlinear; /**< The subsection Nonlinear solver. */
 
     /** Linear solver. */
