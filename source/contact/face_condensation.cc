@@ -66,8 +66,9 @@ namespace PolyFrac
             for (unsigned int c = 0; c < dim; ++c)
               if ((c == k) == (face.M_jump[k][c] == 0.))
                 return false;
-        // The traction response E must be symmetric.
-        const FullMatrix<double> E = local_rows(face).E;
+        // The traction response E must be symmetric (in the axes that
+        // solve() uses).
+        const FullMatrix<double> E = local_rows(slip_aligned(face)).E;
         for (unsigned int a = 0; a < E.m(); ++a)
           for (unsigned int b = 0; b < a; ++b)
             if (std::abs(E(a, b) - E(b, a)) >
@@ -83,34 +84,37 @@ namespace PolyFrac
   FaceLinearisation<dim>
   FaceCondensation<dim>::slip_aligned(const FaceLinearisation<dim> &face)
   {
-    if (dim < 3 || face.M_lambda[0].norm() > 0.)
-      return face;
-    // c = M_λ[τ][n] = −F b̂; R turns (τ_1, τ_2) to (ĉ, ĉ^⊥).
-    Tensor<1, dim> c;
-    for (unsigned int d = 1; d < dim; ++d)
-      c[d] = face.M_lambda[d][0];
-    if (c.norm() == 0.)
-      return face;
-    c /= c.norm();
-    Tensor<2, dim> R;
-    R[0][0]          = 1;
-    R[1]             = c;
-    R[2][1]          = -c[2];
-    R[2][2]          = c[1];
-    auto aligned     = face;
-    aligned.frame    = R * face.frame;
-    aligned.r        = R * face.r;
-    aligned.M_lambda = R * face.M_lambda * transpose(R);
-    aligned.M_jump   = R * face.M_jump * transpose(R);
-    // b̂ is an eigenvector of P and the coupling lies along it: what the
-    // rotation leaves off the diagonal of the tangential block and in the
-    // b̂^⊥ row's normal column is round-off.
-    for (auto *M : {&aligned.M_lambda, &aligned.M_jump})
+    if constexpr (dim == 3)
       {
-        (*M)[1][2] = (*M)[2][1] = 0.;
-        (*M)[2][0]              = 0.;
+        // c = M_λ[τ][n] = −F b̂; R turns (τ_1, τ_2) to (ĉ, ĉ^⊥).
+        Tensor<1, dim> c;
+        for (unsigned int d = 1; d < dim; ++d)
+          c[d] = face.M_lambda[d][0];
+        if (face.M_lambda[0].norm() == 0. && c.norm() > 0.)
+          {
+            c /= c.norm();
+            Tensor<2, dim> R;
+            R[0][0]          = 1;
+            R[1]             = c;
+            R[2][1]          = -c[2];
+            R[2][2]          = c[1];
+            auto aligned     = face;
+            aligned.frame    = R * face.frame;
+            aligned.r        = R * face.r;
+            aligned.M_lambda = R * face.M_lambda * transpose(R);
+            aligned.M_jump   = R * face.M_jump * transpose(R);
+            // b̂ is an eigenvector of P and the coupling lies along it: what
+            // the rotation leaves off the diagonal of the tangential block
+            // and in the b̂^⊥ row's normal column is round-off.
+            for (auto *M : {&aligned.M_lambda, &aligned.M_jump})
+              {
+                (*M)[1][2] = (*M)[2][1] = 0.;
+                (*M)[2][0]              = 0.;
+              }
+            return aligned;
+          }
       }
-    return aligned;
+    return face;
   }
 
 

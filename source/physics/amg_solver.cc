@@ -113,6 +113,47 @@ namespace PolyFrac
       parameters.set("PDE equations", static_cast<int>(dim));
       amg.initialize(matrix, parameters);
     }
+
+
+
+    /**
+     * Solves @p matrix @p x = @p rhs by CG (@p symmetric) or restarted
+     * GMRES, preconditioned with the AMG of initialize_amg(), to the
+     * tolerance `Linear solver/Tolerance` relative to |rhs| within
+     * `Linear solver/Maximum iterations`. GMRES is right-preconditioned, so
+     * that the tolerance bounds the residual of the system itself, like
+     * CG's. Returns the solver control and whether it converged.
+     */
+    template <int dim>
+    std::pair<SolverControl, bool>
+    solve_krylov_amg(const bool                            symmetric,
+                     const TrilinosWrappers::SparseMatrix &matrix,
+                     Vector<double>                       &x,
+                     const Vector<double>                 &rhs,
+                     const DoFMap<dim>                    &dofs,
+                     const std::vector<Point<dim>>        &vertices,
+                     const Parameters::SolverData         &solver)
+    {
+      TrilinosWrappers::PreconditionAMG amg;
+      initialize_amg(amg, matrix, dofs, vertices);
+      SolverControl control(solver.max_iterations,
+                            solver.tolerance * rhs.l2_norm());
+      try
+        {
+          if (symmetric)
+            SolverCG<Vector<double>>(control).solve(matrix, x, rhs, amg);
+          else
+            SolverGMRES<Vector<double>>(
+              control,
+              SolverGMRES<Vector<double>>::AdditionalData(gmres_restart, true))
+              .solve(matrix, x, rhs, amg);
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          return {control, false};
+        }
+      return {control, true};
+    }
   } // namespace
 
 
@@ -126,26 +167,16 @@ namespace PolyFrac
                const std::vector<Point<dim>>        &vertices,
                const Parameters::SolverData         &solver)
   {
-    TrilinosWrappers::PreconditionAMG amg;
-    initialize_amg(amg, matrix, dofs, vertices);
-    SolverControl            control(solver.max_iterations,
-                          solver.tolerance * rhs.l2_norm());
-    SolverCG<Vector<double>> cg(control);
-    try
-      {
-        cg.solve(matrix, x, rhs, amg);
-      }
-    catch (const SolverControl::NoConvergence &e)
-      {
-        AssertThrow(false,
-                    ExcMessage("The AMG-preconditioned CG solver did not "
-                               "converge in " +
-                               std::to_string(e.last_step) +
-                               " iterations (residual " +
-                               std::to_string(e.last_residual) +
-                               "). Raise Linear solver/Maximum iterations "
-                               "or use Method = direct."));
-      }
+    const auto [control, converged] =
+      solve_krylov_amg(true, matrix, x, rhs, dofs, vertices, solver);
+    AssertThrow(converged,
+                ExcMessage("The AMG-preconditioned CG solver did not "
+                           "converge in " +
+                           std::to_string(control.last_step()) +
+                           " iterations (residual " +
+                           std::to_string(control.last_value()) +
+                           "). Raise Linear solver/Maximum iterations "
+                           "or use Method = direct."));
     return control.last_step();
   }
 
@@ -160,24 +191,9 @@ namespace PolyFrac
                   const std::vector<Point<dim>>        &vertices,
                   const Parameters::SolverData         &solver)
   {
-    TrilinosWrappers::PreconditionAMG amg;
-    initialize_amg(amg, matrix, dofs, vertices);
-    // Right preconditioning, so that the tolerance bounds the residual of
-    // the system itself, like CG's.
-    SolverControl               control(solver.max_iterations,
-                          solver.tolerance * rhs.l2_norm());
-    SolverGMRES<Vector<double>> gmres(
-      control,
-      SolverGMRES<Vector<double>>::AdditionalData(gmres_restart, true));
-    try
-      {
-        gmres.solve(matrix, x, rhs, amg);
-      }
-    catch (const SolverControl::NoConvergence &)
-      {
-        return {control.last_step(), false};
-      }
-    return {control.last_step(), true};
+    const auto [control, converged] =
+      solve_krylov_amg(false, matrix, x, rhs, dofs, vertices, solver);
+    return {control.last_step(), converged};
   }
 
 

@@ -45,13 +45,22 @@ linearisation(const FractureNetwork<dim> &network,
     {
       // Contact, and slip (Tresca or Coulomb, p = g/|b_τ| = 0.7, direction
       // b̂; Coulomb adds the derivative of g = F b_n, F = 0.6) or no
-      // friction.
+      // friction. Every other Coulomb face is at the onset of slip, p = 1
+      // to round-off (|b_τ| = g at the start of a load step, where λ_τ =
+      // g b̂: no residual across b̂).
+      const bool onset  = state == 4 && i % 10 == 9;
       face.M_jump[0][0] = -beta;
       Tensor<1, dim> hat;
       for (unsigned int d = 1; d < dim; ++d)
         hat[d] = std::cos(2. * i + d);
       hat /= hat.norm();
-      const double p = state == 3 ? 0. : 0.7;
+      if (onset)
+        {
+          const double along = face.r * hat;
+          for (unsigned int d = 1; d < dim; ++d)
+            face.r[d] = along * hat[d];
+        }
+      const double p = state == 3 ? 0. : (onset ? 1. - 1e-15 : 0.7);
       const double F = state == 4 ? 0.6 : 0.;
       for (unsigned int d = 1; d < dim; ++d)
         {
