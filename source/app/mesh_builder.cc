@@ -242,10 +242,10 @@ namespace PolyFrac
       std::uniform_real_distribution<double> uniform(-1., 1.);
       const double                           D     = prm.mesh.distortion;
       std::vector<Point<dim>>                moved = mesh.vertices;
-      // The smooth map bends within 1/8 of the shortest side of the box.
+      // The smooth map bends within 1/4 of the shortest side of the box.
       double length = std::numeric_limits<double>::max();
       for (unsigned int d = 0; d < dim; ++d)
-        length = std::min(length, (upper[d] - lower[d]) / 8);
+        length = std::min(length, (upper[d] - lower[d]) / 4);
       const auto tips = interior_tips(fractures, lower, upper);
       for (unsigned int v = 0; v < n_vertices; ++v)
         {

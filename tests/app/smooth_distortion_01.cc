@@ -2,7 +2,7 @@
 // smooth map of the box when fractures have tips and an intersection
 // (MeshBuilder::distort()): the largest discrete strain |δu_a − δu_b| /
 // |x_a − x_b| over the vertex pairs of a cell tends to the strain of the
-// map (about 3 D here, approached from below) instead of growing like 1/h,
+// map (about 1.6 D here, approached from below) instead of growing like 1/h,
 // and the fractures stay resolved by the mesh faces.
 //
 // Keeping tip and intersection vertices in place while the map moves their
