@@ -21,6 +21,27 @@ namespace PolyFrac::Testing
   }
 
   /**
+   * Fracture A on y = 0, |x| <= 1/2 (and |z| <= 1/2), with its tips inside
+   * the box (-1, 1)^dim, and fracture B on x = 0 across the box, crossing A.
+   */
+  inline void
+  add_fractures_with_tips(Parameters &prm, const unsigned int dim)
+  {
+    if (dim == 2)
+      prm.fractures.geometries = {{Point<3>(-0.5, 0, 0), Point<3>(0.5, 0, 0)},
+                                  {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
+    else
+      prm.fractures.geometries = {{Point<3>(-0.5, 0, -0.5),
+                                   Point<3>(0.5, 0, -0.5),
+                                   Point<3>(0.5, 0, 0.5),
+                                   Point<3>(-0.5, 0, 0.5)},
+                                  {Point<3>(0, -1, -1),
+                                   Point<3>(0, 1, -1),
+                                   Point<3>(0, 1, 1),
+                                   Point<3>(0, -1, 1)}};
+  }
+
+  /**
    * Two fractures crossing the whole box (-1, 1)^dim through the origin:
    * the planes x_0 = 0 and x_1 = 0 (2D: segments, 3D: squares).
    */

@@ -8,13 +8,134 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <polyfrac/app/mesh_builder.h>
+#include <polyfrac/fractures/segment_distance.h>
 
+#include <array>
 #include <random>
 
 namespace PolyFrac
 {
   namespace MeshBuilder
   {
+    namespace
+    {
+      /**
+       * The map of `Distortion type = smooth` at @p x in the box [@p lower,
+       * @p upper]: component i is D L_i/(2π) sin(2π ξ_i) Π_{j≠i} sin(π ξ_j),
+       * ξ in [0, 1]^d, so that its strain is at most @p D and it vanishes on
+       * the boundary.
+       */
+      template <int dim>
+      Tensor<1, dim>
+      sine_map(const Point<dim> &x,
+               const Point<dim> &lower,
+               const Point<dim> &upper,
+               const double      D)
+      {
+        Tensor<1, dim> xi, shift;
+        for (unsigned int d = 0; d < dim; ++d)
+          xi[d] = (x[d] - lower[d]) / (upper[d] - lower[d]);
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            shift[i] = D * (upper[i] - lower[i]) / (2 * M_PI) *
+                       std::sin(2 * M_PI * xi[i]);
+            for (unsigned int j = 0; j < dim; ++j)
+              if (j != i)
+                shift[i] *= std::sin(M_PI * xi[j]);
+          }
+        return shift;
+      }
+
+
+
+      /**
+       * 1 − (1 − min(1, d²/ℓ²))² for the squared distance
+       * @p squared_distance = d² and ℓ = @p length: 0 (to second order) at
+       * d = 0, 1 from d = ℓ on, and continuously differentiable in space
+       * wherever d² is (for the distance to a convex set: everywhere).
+       */
+      double
+      cut_off(const double squared_distance, const double length)
+      {
+        const double t = std::min(1., squared_distance / (length * length));
+        return 1 - (1 - t) * (1 - t);
+      }
+
+
+
+      /**
+       * The tips of @p fractures as segments: their end points (2D, as
+       * segments of length 0) and edges (3D), without those on a face of the
+       * box [@p lower, @p upper], whose vertices stay anyway.
+       */
+      template <int dim>
+      std::vector<std::array<Point<dim>, 2>>
+      interior_tips(const std::vector<Fracture<dim>> &fractures,
+                    const Point<dim>                 &lower,
+                    const Point<dim>                 &upper)
+      {
+        const double tol = 1e-10 * lower.distance(upper);
+        std::vector<std::array<Point<dim>, 2>> tips;
+        for (const Fracture<dim> &fracture : fractures)
+          for (unsigned int i = 0; i < fracture.points.size(); ++i)
+            {
+              const std::array<Point<dim>, 2> tip = {
+                {fracture.points[i],
+                 fracture
+                   .points[dim == 2 ? i : (i + 1) % fracture.points.size()]}};
+              bool on_box_face = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                for (const double side : {lower[d], upper[d]})
+                  on_box_face =
+                    on_box_face || (std::abs(tip[0][d] - side) < tol &&
+                                    std::abs(tip[1][d] - side) < tol);
+              if (!on_box_face)
+                tips.push_back(tip);
+            }
+        return tips;
+      }
+
+
+
+      /**
+       * The sine_map() at @p x bent to respect @p fractures, through
+       * cut_off() with ℓ = @p length: within ℓ of a fracture its normal
+       * component fades out (at the fracture it is tangent), and it vanishes
+       * at the @p tips and where two fractures f, g intersect
+       * (d_f² + d_g² = 0). The distorted mesh thus stays a smooth image of
+       * the undistorted one: keeping tip and intersection vertices in place
+       * while their neighbours move by O(D L) would kink it at every h.
+       */
+      template <int dim>
+      Tensor<1, dim>
+      smooth_shift(const Point<dim>                             &x,
+                   const Point<dim>                             &lower,
+                   const Point<dim>                             &upper,
+                   const double                                  D,
+                   const std::vector<Fracture<dim>>             &fractures,
+                   const std::vector<std::array<Point<dim>, 2>> &tips,
+                   const double                                  length)
+      {
+        Tensor<1, dim>      shift = sine_map(x, lower, upper, D);
+        std::vector<double> squared_distances;
+        for (const Fracture<dim> &fracture : fractures)
+          {
+            squared_distances.push_back(std::pow(fracture.distance(x), 2));
+            shift -= (1 - cut_off(squared_distances.back(), length)) *
+                     (shift * fracture.normal) * fracture.normal;
+          }
+        for (const auto &[a, b] : tips)
+          shift *= cut_off(std::pow(distance_to_segment(x, a, b), 2), length);
+        for (unsigned int f = 0; f < fractures.size(); ++f)
+          for (unsigned int g = f + 1; g < fractures.size(); ++g)
+            shift *=
+              cut_off(squared_distances[f] + squared_distances[g], length);
+        return shift;
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     make_box(const Parameters   &prm,
@@ -121,6 +242,11 @@ namespace PolyFrac
       std::uniform_real_distribution<double> uniform(-1., 1.);
       const double                           D     = prm.mesh.distortion;
       std::vector<Point<dim>>                moved = mesh.vertices;
+      // The smooth map bends within 1/4 of the shortest side of the box.
+      double length = std::numeric_limits<double>::max();
+      for (unsigned int d = 0; d < dim; ++d)
+        length = std::min(length, (upper[d] - lower[d]) / 4);
+      const auto tips = interior_tips(fractures, lower, upper);
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           Tensor<1, dim> shift;
@@ -128,23 +254,8 @@ namespace PolyFrac
             for (unsigned int d = 0; d < dim; ++d)
               shift[d] = D * h[v] * uniform(generator);
           else
-            {
-              // A fixed smooth map: component i is
-              // D L_i/(2π) sin(2π ξ_i) Π_{j≠i} sin(π ξ_j), ξ in [0, 1]^d, so
-              // its strain is at most D.
-              Tensor<1, dim> xi;
-              for (unsigned int d = 0; d < dim; ++d)
-                xi[d] =
-                  (mesh.vertices[v][d] - lower[d]) / (upper[d] - lower[d]);
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  shift[i] = D * (upper[i] - lower[i]) / (2 * M_PI) *
-                             std::sin(2 * M_PI * xi[i]);
-                  for (unsigned int j = 0; j < dim; ++j)
-                    if (j != i)
-                      shift[i] *= std::sin(M_PI * xi[j]);
-                }
-            }
+            shift = smooth_shift(
+              mesh.vertices[v], lower, upper, D, fractures, tips, length);
           if (fixed[v] || h[v] == std::numeric_limits<double>::max())
             continue;
 

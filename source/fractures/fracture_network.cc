@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/fractures/segment_distance.h>
 
 #include <cmath>
 #include <iomanip>
@@ -12,17 +13,6 @@ namespace PolyFrac
 {
   namespace
   {
-    template <int dim>
-    double
-    distance_to_segment(const Point<dim> &p,
-                        const Point<dim> &a,
-                        const Point<dim> &b)
-    {
-      const Tensor<1, dim> ab = b - a;
-      const double t = std::clamp((p - a) * ab / ab.norm_square(), 0., 1.);
-      return p.distance(a + t * ab);
-    }
-
     template <int dim>
     std::string
     describe(const Fracture<dim> &fracture)

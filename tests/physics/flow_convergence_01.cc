@@ -1,11 +1,12 @@
-// Checks that the fractured flow converges with order >= 0.9 in
+// Checks that the fractured flow converges with order >= 1.5 in
 // err_pressure and err_fracture_pressure (doc/scheme.md §8) on a
 // manufactured solution with a fracture intersection and tips, on several
-// mesh families in 2D and 3D (the acceptance of issue 8; the rate between
-// the last two levels is asserted).
+// mesh families in 2D and 3D, smoothly distorted hexahedra among them (the
+// acceptance of issue 8 asks for 0.9; the rate between the last two levels
+// is asserted, and is at least 1.8 on every family).
 //
 // The solution (k/η = 1, Λ_f = 2, C_f/η = 1: d_0 = 12^{1/3}, η = 1), with
-// q = Π_i cos(2π x_i) and b(s) = sin²(2πs) for |s| < 1/2, 0 elsewhere:
+// q = Π_i cos(2π x_i) and b(s) = sin⁴(2πs) for |s| < 1/2, 0 elsewhere:
 // - fracture A: y = 0, |x| <= 1/2 (and |z| <= 1/2): four (3D) or two (2D)
 //   tips, where b and b' vanish (no flow);
 // - fracture B: x = 0 across the box, crossing A (the intersection, where
@@ -16,12 +17,14 @@
 // - h_m = −k Δp_m off Γ, h_f = −C_f Δ_τ p_f − 2 k B on A, −C_f Δ_τ p_f on B;
 // - the exact pressure on ∂Ω (fracture edges of B take it: p_f = p_m there).
 //
-// Smoothly distorted hexahedra (non-planar faces) use fracture B alone
-// (p_m = p_f = q, no tips, no intersection): MeshBuilder keeps tip and
-// intersection vertices in place while the smooth map moves their
-// neighbours by up to D L/(2π), which kinks the mesh near them at any h
-// (with A and B, D = 0.1: order 0.43 in err_pressure between 16³ and 32³;
-// with B alone: order 2.0).
+// b is C³, so that the sources are continuous: with b = sin² (C¹), b''
+// jumps by 8π² at |s| = 1/2 and so do the sources across the planes
+// |x| = 1/2 and |z| = 1/2. Meshes whose faces lie on these planes did not
+// notice; smoothly distorted hexahedra, whose cells straddle them, lost
+// the order (one-point source integration of a jump in O(h) layers):
+// err_pressure 0.134, 0.105 on 16³, 32³ (order 0.43; 0.36 with today's
+// MeshBuilder::distort()), erratic under changes of the distortion or the
+// level.
 
 #include <deal.II/base/mpi.h>
 
@@ -38,15 +41,14 @@
 using namespace PolyFrac;
 
 /** The manufactured solution of dimension @p dim as Flow and Exact
- * solution entries, with fractures A and B, or B alone if @p only_b. */
+ * solution entries, with fractures A and B. */
 void
-set_manufactured_solution(Parameters        &prm,
-                          const unsigned int dim,
-                          const bool         only_b)
+set_manufactured_solution(Parameters &prm, const unsigned int dim)
 {
   // b(@) and b''(@), @ replaced by a coordinate.
-  const std::string b   = "(abs(@) < 0.5 ? sin(2*pi*@)^2 : 0)";
-  const std::string ddb = "(abs(@) < 0.5 ? 8*pi^2*cos(4*pi*@) : 0)";
+  const std::string b   = "(abs(@) < 0.5 ? sin(2*pi*@)^4 : 0)";
+  const std::string ddb = "(abs(@) < 0.5 ? 16*pi^2*sin(2*pi*@)^2*"
+                          "(3*cos(2*pi*@)^2 - sin(2*pi*@)^2) : 0)";
   const auto        at  = [](std::string f, const std::string &coordinate) {
     for (std::size_t i = f.find('@'); i != std::string::npos; i = f.find('@'))
       f.replace(i, 1, coordinate);
@@ -55,16 +57,14 @@ set_manufactured_solution(Parameters        &prm,
   std::string q, B, laplace_B, q_A, q_B, laplace_q, laplace_q_A, laplace_q_B;
   if (dim == 2)
     {
-      q                        = "cos(2*pi*x)*cos(2*pi*y)";
-      B                        = at(b, "x");
-      laplace_B                = at(ddb, "x");
-      q_A                      = "cos(2*pi*x)";
-      q_B                      = "cos(2*pi*y)";
-      laplace_q                = "(-8*pi^2*" + q + ")";
-      laplace_q_A              = "(-4*pi^2*" + q_A + ")";
-      laplace_q_B              = "(-4*pi^2*" + q_B + ")";
-      prm.fractures.geometries = {{Point<3>(-0.5, 0, 0), Point<3>(0.5, 0, 0)},
-                                  {Point<3>(0, -1, 0), Point<3>(0, 1, 0)}};
+      q           = "cos(2*pi*x)*cos(2*pi*y)";
+      B           = at(b, "x");
+      laplace_B   = at(ddb, "x");
+      q_A         = "cos(2*pi*x)";
+      q_B         = "cos(2*pi*y)";
+      laplace_q   = "(-8*pi^2*" + q + ")";
+      laplace_q_A = "(-4*pi^2*" + q_A + ")";
+      laplace_q_B = "(-4*pi^2*" + q_B + ")";
     }
   else
     {
@@ -72,20 +72,13 @@ set_manufactured_solution(Parameters        &prm,
       B         = at(b, "x") + "*" + at(b, "z");
       laplace_B = "(" + at(ddb, "x") + "*" + at(b, "z") + " + " + at(b, "x") +
                   "*" + at(ddb, "z") + ")";
-      q_A                      = "cos(2*pi*x)*cos(2*pi*z)";
-      q_B                      = "cos(2*pi*y)*cos(2*pi*z)";
-      laplace_q                = "(-12*pi^2*" + q + ")";
-      laplace_q_A              = "(-8*pi^2*" + q_A + ")";
-      laplace_q_B              = "(-8*pi^2*" + q_B + ")";
-      prm.fractures.geometries = {{Point<3>(-0.5, 0, -0.5),
-                                   Point<3>(0.5, 0, -0.5),
-                                   Point<3>(0.5, 0, 0.5),
-                                   Point<3>(-0.5, 0, 0.5)},
-                                  {Point<3>(0, -1, -1),
-                                   Point<3>(0, 1, -1),
-                                   Point<3>(0, 1, 1),
-                                   Point<3>(0, -1, 1)}};
+      q_A         = "cos(2*pi*x)*cos(2*pi*z)";
+      q_B         = "cos(2*pi*y)*cos(2*pi*z)";
+      laplace_q   = "(-12*pi^2*" + q + ")";
+      laplace_q_A = "(-8*pi^2*" + q_A + ")";
+      laplace_q_B = "(-8*pi^2*" + q_B + ")";
     }
+  Testing::add_fractures_with_tips(prm, dim);
   prm.constants                    = {{"k", 1.}, {"lambda_f", 2.}, {"C", 1.}};
   prm.flow.permeability            = "k";
   prm.flow.viscosity               = 1;
@@ -105,30 +98,20 @@ set_manufactured_solution(Parameters        &prm,
   for (unsigned int id = 0; id < 2 * dim; ++id)
     prm.flow.pressure_ids.push_back(id);
   prm.flow.pressure_expression = p_m;
-  if (only_b)
-    {
-      prm.fractures.geometries.erase(prm.fractures.geometries.begin());
-      prm.exact.matrix_pressure    = q;
-      prm.exact.fracture_pressure  = q_B;
-      prm.flow.matrix_source       = "-k*" + laplace_q;
-      prm.flow.fracture_source     = "-C*" + laplace_q_B;
-      prm.flow.pressure_expression = q;
-    }
 }
 
 template <int dim>
 void
 check(const std::string                       &family,
       const std::function<void(Parameters &)> &setup,
-      const unsigned int                       n_levels,
-      const bool                               only_b = false)
+      const unsigned int                       n_levels)
 {
   Parameters prm              = Testing::default_parameters(dim, 4);
   prm.mesh.global_refinements = dim == 2 ? 1 : 0;
   // CG + AMG: the finest 3D levels have 10^5 to 10^6 unknowns.
   prm.solver.method    = "AMG";
   prm.solver.tolerance = 1e-12;
-  set_manufactured_solution(prm, dim, only_b);
+  set_manufactured_solution(prm, dim);
   setup(prm);
   std::cout << dim << "D " << family << std::endl;
   std::vector<double> h, e_m, e_f;
@@ -168,11 +151,12 @@ check(const std::string                       &family,
                   << std::log(e_f[level - 1] / e_f[level]) /
                        std::log(h[level - 1] / h[level]);
       std::cout << std::endl;
-      AssertThrow(only_b || (edges.n_intersection_edges() > 0 &&
-                             edges.n_edges(FractureEdges<dim>::Kind::tip) > 0),
+      AssertThrow(edges.n_intersection_edges() > 0 &&
+                    edges.n_edges(FractureEdges<dim>::Kind::tip) > 0,
                   ExcMessage("the network must have an intersection and tips"));
     }
-  // The order in h between the last two levels, asserted >= 0.9 (issue 8).
+  // The order in h between the last two levels, asserted >= 1.5 (second
+  // order is observed; issue 8 asks for 0.9).
   const unsigned int l = n_levels - 1;
   for (const auto &[name, e] :
        {std::make_pair(std::string("err_pressure"), &e_m),
@@ -180,10 +164,10 @@ check(const std::string                       &family,
     {
       const double rate =
         std::log((*e)[l - 1] / (*e)[l]) / std::log(h[l - 1] / h[l]);
-      AssertThrow(rate >= 0.9,
+      AssertThrow(rate >= 1.5,
                   ExcMessage(std::to_string(dim) + "D " + family + ": " + name +
                              " converges with order " + std::to_string(rate) +
-                             " < 0.9 on the last two levels."));
+                             " < 1.5 on the last two levels."));
     }
 }
 
@@ -192,6 +176,12 @@ main(int argc, char **argv)
 {
   // Trilinos (AMG) needs MPI, here on one process.
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // The smooth map bends near the fractures so that tip and intersection
+  // vertices stay without kinking the mesh (MeshBuilder::distort()).
+  const auto smooth = [](Parameters &p) {
+    p.mesh.distortion      = 0.1;
+    p.mesh.distortion_type = "smooth";
+  };
   check<2>(
     "quadrilaterals", [](Parameters &) {}, 4);
   check<2>(
@@ -202,6 +192,7 @@ main(int argc, char **argv)
     "randomly distorted quadrilaterals",
     [](Parameters &p) { p.mesh.distortion = 0.2; },
     4);
+  check<2>("smoothly distorted quadrilaterals", smooth, 4);
   check<2>(
     "hanging nodes", [](Parameters &p) { p.mesh.local_refinements = 1; }, 4);
   check<2>(
@@ -210,14 +201,7 @@ main(int argc, char **argv)
     "hexahedra", [](Parameters &) {}, 4);
   check<3>(
     "tetrahedra", [](Parameters &p) { p.mesh.cell_type = "simplex"; }, 4);
-  check<3>(
-    "smoothly distorted hexahedra (non-planar faces), fracture B alone",
-    [](Parameters &p) {
-      p.mesh.distortion      = 0.1;
-      p.mesh.distortion_type = "smooth";
-    },
-    4,
-    true);
+  check<3>("smoothly distorted hexahedra (non-planar faces)", smooth, 4);
   check<3>(
     "hanging nodes", [](Parameters &p) { p.mesh.local_refinements = 1; }, 4);
   check<3>(

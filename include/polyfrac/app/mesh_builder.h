@@ -43,7 +43,11 @@ namespace PolyFrac
 
     /**
      * Moves the vertices of @p mesh (Distortion, Distortion type, Random
-     * seed), keeping the fracture geometry as described above.
+     * seed), keeping the fracture geometry as described above. The smooth
+     * map does so smoothly: near a fracture its normal component fades
+     * out, and it fades to zero at tips and intersections, rather than
+     * sparing only their vertices while their neighbours move by O(D L)
+     * (a kink at every h, which folds the mesh once h < D L/(2π)).
      * @p fracture_vertices flags the vertices of fracture faces that are
      * not described by a planar Fracture (gmsh tags): those stay.
      */
