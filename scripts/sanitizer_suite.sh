@@ -20,6 +20,10 @@ long_tests=(
   polyfrac/b5_closed_crack # 308 s (Release 5 s)
   polyfrac/b4_mandel # 252 s (Release 11 s; b4_terzaghi stays, 14 s)
   polyfrac/flow_2d_network_agglomerated_simplices # 179 s (AMG path)
+  # Two runs each of B1 and B2-3D with Coulomb friction (direct and GMRES);
+  # the GMRES step itself is checked in Debug by contact/face_condensation_01.
+  polyfrac/equal_runs_coulomb_amg_2d
+  polyfrac/equal_runs_coulomb_amg_3d
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \
@@ -28,6 +32,6 @@ cmake --build build-debug -j "$(nproc)" >> build-debug.log 2>&1 ||
   { tail -50 build-debug.log; exit 1; }
 echo "Built build-debug/ (log: build-debug.log)"
 
-exclude="^($(IFS='|'; echo "${long_tests[*]}"))\.debug$"
+exclude="^($(IFS='|'; echo "${long_tests[*]}"))(\.debug)?$"
 cd build-debug
 ctest -j "$(nproc)" --output-on-failure -E "$exclude"

@@ -276,6 +276,7 @@ namespace PolyFrac
   PoromechanicsModel<dim>::solve_mechanics(const double                t,
                                            const Vector<double>       &p,
                                            const MechanicalState<dim> &start,
+                                           const MechanicalState<dim> &guess,
                                            MechanicalState<dim>       &result)
   {
     const Vector<double> load =
@@ -291,7 +292,7 @@ namespace PolyFrac
     const unsigned int before = contact->n_newton_iterations();
     std::ostringstream log;
     result = start;
-    contact->solve(result, log);
+    contact->solve(result, log, &guess);
     return contact->n_newton_iterations() - before;
   }
 
@@ -331,7 +332,7 @@ namespace PolyFrac
             const Vector<double> p_next = anderson.next(p_k, image);
             MechanicalState<dim> u_next;
             *report.newton_iterations +=
-              solve_mechanics(t_new, p_next, state, u_next);
+              solve_mechanics(t_new, p_next, state, u_k, u_next);
             increment =
               relative_increment(u_next.displacement, u_k.displacement) +
               relative_increment(image, p_k);

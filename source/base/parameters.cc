@@ -1263,12 +1263,9 @@ namespace PolyFrac
                                " is listed twice: give all its components in "
                                "one item, e.g. <" +
                                std::to_string(id) + ": x, y>."));
-        const auto listed = [id](const std::vector<unsigned> &ids) {
-          return std::find(ids.begin(), ids.end(), id) != ids.end();
-        };
         AssertThrow(boundary.dirichlet_ids.empty() ?
-                      !listed(boundary.neumann_ids) :
-                      listed(boundary.dirichlet_ids),
+                      !listed(boundary.neumann_ids, id) :
+                      listed(boundary.dirichlet_ids, id),
                     ExcMessage(where + "the boundary id " + std::to_string(id) +
                                " is not a Dirichlet id (see Dirichlet boundary "
                                "ids and Neumann boundary ids): add it to "
@@ -1556,5 +1553,13 @@ namespace PolyFrac
     ParameterHandler handler;
     declare(handler, dim);
     handler.print_parameters(out, ParameterHandler::PRM);
+  }
+
+
+
+  bool
+  listed(const std::vector<unsigned int> &ids, const unsigned int id)
+  {
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
   }
 } // namespace PolyFrac

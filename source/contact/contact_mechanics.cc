@@ -561,17 +561,29 @@ namespace PolyFrac
 
   template <int dim>
   void
-  ContactMechanics<dim>::solve(MechanicalState<dim> &state, std::ostream &out)
+  ContactMechanics<dim>::set_solution(const MechanicalState<dim> &state)
   {
-    if (state.displacement.size() == dofs.n_displacement_dofs())
-      {
-        for (unsigned int k = 0; k < state.displacement.size(); ++k)
-          solution(k) = state.displacement(k);
-        for (unsigned int i = 0; i < state.multipliers.size(); ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            solution(dofs.multiplier_dof(i, d)) = state.multipliers[i][d];
-      }
+    if (state.displacement.size() != dofs.n_displacement_dofs())
+      return;
+    for (unsigned int k = 0; k < state.displacement.size(); ++k)
+      solution(k) = state.displacement(k);
+    for (unsigned int i = 0; i < state.multipliers.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        solution(dofs.multiplier_dof(i, d)) = state.multipliers[i][d];
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::solve(MechanicalState<dim>       &state,
+                               std::ostream               &out,
+                               const MechanicalState<dim> *guess)
+  {
+    set_solution(state);
     previous_step = solution;
+    if (guess && prm.contact.n_load_steps == 1)
+      set_solution(*guess);
 
     const unsigned int n_steps = prm.contact.n_load_steps;
     double             reached = 0;

@@ -176,7 +176,9 @@ namespace PolyFrac
         M_lambda.mmult(rows.C, M_kinematic);
         rows.C *= -1.;
       }
-    rows.coupled = rows.C.frobenius_norm() > 0.;
+    // (n = 0, all rows kinematic: C is empty, which frobenius_norm()
+    // refuses in deal.II's Debug build.)
+    rows.coupled = n > 0 && rows.C.frobenius_norm() > 0.;
     rows.jump_variable.resize(dim, false);
     for (unsigned int a = 0; a < rows.traction.size(); ++a)
       for (unsigned int b = 0; b < rows.traction.size(); ++b)

@@ -17,17 +17,6 @@
 
 namespace PolyFrac
 {
-  namespace
-  {
-    bool
-    listed(const std::vector<unsigned int> &ids, const types::boundary_id id)
-    {
-      return std::find(ids.begin(), ids.end(), id) != ids.end();
-    }
-  } // namespace
-
-
-
   template <int dim>
   Flow<dim>::Flow(const Parameters           &prm,
                   const MeshGeometry<dim>    &geometry,

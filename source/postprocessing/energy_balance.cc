@@ -8,18 +8,6 @@
 
 namespace PolyFrac
 {
-  namespace
-  {
-    /** Whether @p id is among the boundary ids @p ids. */
-    bool
-    listed(const std::vector<unsigned int> &ids, const types::boundary_id id)
-    {
-      return std::find(ids.begin(), ids.end(), id) != ids.end();
-    }
-  } // namespace
-
-
-
   double
   EnergyTerms::residual() const
   {

@@ -132,11 +132,14 @@ namespace PolyFrac
                       const Vector<double>       &p_k) const;
 
     /** The mechanics at time @p t under the pressures @p p, from the state
-     * @p start of the step; returns the Newton iterations (contact). */
+     * @p start of the step (the Coulomb slip reference), Newton starting
+     * from @p guess (the previous coupling iterate); returns the Newton
+     * iterations (contact). */
     unsigned int
     solve_mechanics(const double                t,
                     const Vector<double>       &p,
                     const MechanicalState<dim> &start,
+                    const MechanicalState<dim> &guess,
                     MechanicalState<dim>       &result);
 
     /** The apertures d_0 − [[u]]_n of @p u per fracture face. */

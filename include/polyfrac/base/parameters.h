@@ -379,6 +379,11 @@ namespace PolyFrac
     /** Shared, so that a Parameters object can be copied and modified. */
     std::shared_ptr<ParameterHandler> prm;
   };
+
+  /** Whether the boundary id @p id is among the boundary ids @p ids (an
+   * entry such as Flow/Pressure boundary ids). */
+  bool
+  listed(const std::vector<unsigned int> &ids, const unsigned int id);
 } // namespace PolyFrac
 
 #endif

@@ -108,10 +108,15 @@ namespace PolyFrac
      * Runs all load steps from @p state (zero, or the state of the previous
      * time step: u^{n−1} of the Coulomb slip increment) and writes the
      * converged displacement, multipliers and contact states to it; prints
-     * each Newton iteration to @p out.
+     * each Newton iteration to @p out. With one load step, Newton may start
+     * from @p guess instead (a nearby solution, e.g. the previous iterate of
+     * a coupling iteration); @p state stays the reference of the slip
+     * increment.
      */
     void
-    solve(MechanicalState<dim> &state, std::ostream &out);
+    solve(MechanicalState<dim>       &state,
+          std::ostream               &out,
+          const MechanicalState<dim> *guess = nullptr);
 
     /**
      * The loads and Dirichlet data at time @p t, plus @p additional_load on
@@ -143,6 +148,11 @@ namespace PolyFrac
     }
 
   private:
+    /** Copies the displacement and multipliers of @p state (if it has
+     * them) into #solution. */
+    void
+    set_solution(const MechanicalState<dim> &state);
+
     /** Fills #dirichlet from the Dirichlet constraints of the elasticity
      * operator (and the bubbles when Contact/Bubbles = false). */
     void
