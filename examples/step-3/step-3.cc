@@ -199,9 +199,15 @@
  *   3. runs the time loop twice with the library's PoromechanicsModel:
  *      with Anderson acceleration and the limit of the file, and with the
  *      plain iteration and a limit ten times larger;
- *   4. prints a table per step: the coupling iterations of both runs, the
+ *   4. prints the relative increments of the coupling iterations of the
+ *      first step with and without acceleration (StepReport keeps them),
+ *      and checks that the plain iteration creeps;
+ *   5. prints a table per step: the coupling iterations of both runs, the
  *      face states, the mean fracture pressure and aperture, the energy
- *      residual; and checks what the introduction claims.
+ *      residuals; and checks the rest of what the introduction claims:
+ *      every step of both runs converges, Anderson needs fewer iterations
+ *      in every step, the two runs agree, the energy residual is within
+ *      its bound, faces open and slip.
  */
 
 
@@ -461,7 +467,8 @@ namespace Step3
 
     // Step 2: the plain iteration on the first step, with the iteration
     // limit of the file. The parameters are a plain struct; a copy with
-    // other values of the two entries makes the plain variant.
+    // another Anderson depth (and below, another iteration limit) makes
+    // the plain variant.
     Parameters plain_prm               = prm;
     plain_prm.nonlinear.anderson_depth = 0;
     const std::vector<StepReport> first =
@@ -483,9 +490,9 @@ namespace Step3
 
     // Step 4: the increments of the first step, the table of all steps
     // and the checks. The tables come first, so that a failing check can be
-    // understood from them. The plain iteration must have been still
-    // creeping when it gave up: its increments shrink by less than 10 %
-    // per iteration at the end.
+    // understood from them. The plain iteration must creep: on its slowest
+    // stretch of ten iterations its increment shrinks by less than 10 % per
+    // iteration.
     if (anderson[0].converged)
       {
         const double factor = print_first_step(first[0],
