@@ -84,17 +84,19 @@
  * ----------------------
  *
  * Each time step is a nonlinear system: contact and friction are
- * nonlinear, and so is the cubic law. One could solve it monolithically
- * by Newton's method, but the library solves it by alternating between
- * the two physics, each with its own solver: the HFV flow with a direct
- * solver, the contact mechanics by the semi-smooth Newton method of
- * step-2. Such a split iteration converges only if it is done right. The
- * naive version (solve the flow with the last displacement, then the
- * mechanics with the new pressure) can diverge, because the flow then
- * does not know that a rising pressure expands the rock and so makes room
- * for the fluid. The *fixed-stress* split (Kim, Tchelepi, Juanes 2011;
- * convergence by Mikelić and Wheeler 2013) tells it: in the flow step of
- * iteration k + 1 the matrix storage is augmented by a relaxation term,
+ * nonlinear, and so is the cubic law. One could solve it monolithically by
+ * Newton's method, but the library solves it by alternating between the
+ * two physics, each with its own solver: the HFV flow by one linear solve
+ * (with the displacement, and so the aperture in the cubic law, of the
+ * last iterate), the contact mechanics by the semi-smooth Newton method of
+ * step-2 under the new pressures. Such a split iteration converges only if
+ * it is done right. The naive version (solve the flow with the last
+ * displacement, then the mechanics with the new pressure) can diverge,
+ * because the flow then does not know that a rising pressure expands the
+ * rock and so makes room for the fluid. The *fixed-stress* split (Kim,
+ * Tchelepi, Juanes 2011; convergence by Mikelić and Wheeler 2013) tells
+ * it: in the flow step of iteration k + 1 the matrix storage is augmented
+ * by a relaxation term,
  *
  *     (1/M) ∂_t p_m  →  (1/M) ∂_t p_m + L (p_m^{k+1} − p_m^k)/Δt,
  *     L = b²/K_dr,   K_dr = λ_L + 2μ/d,
