@@ -336,6 +336,7 @@ namespace PolyFrac
             increment =
               relative_increment(u_next.displacement, u_k.displacement) +
               relative_increment(image, p_k);
+            report.coupling_increments.push_back(increment);
             u_k                        = u_next;
             p_k                        = p_next;
             report.coupling_iterations = k;

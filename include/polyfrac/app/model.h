@@ -10,6 +10,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace PolyFrac
 {
@@ -43,6 +44,9 @@ namespace PolyFrac
     std::optional<double> mean_fracture_pressure;
     /** The residual of the discrete energy balance of the step. */
     std::optional<double> energy_residual;
+    /** The relative increment of each coupling iteration of the step
+     * (PoromechanicsModel: max|Δu|/max|u| + max|Δp|/max|p|), in order. */
+    std::vector<double> coupling_increments;
   };
 
   /**

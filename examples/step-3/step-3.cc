@@ -1,0 +1,703 @@
+/* ---------------------------------------------------------------------
+ *
+ * PolyFrac step-3: poromechanics with a fracture, the fixed-stress split
+ * and Anderson acceleration.
+ *
+ * ---------------------------------------------------------------------
+ *
+ * Introduction
+ * ============
+ *
+ * In step-1 and step-2 the rock was dry: a solid body with a fracture whose
+ * sides push on each other and rub. Real rock is porous and saturated, and
+ * the fluid in its pores and in its fractures carries part of the load.
+ * Pump fluid into a fracture and its pressure rises; the pressure pushes
+ * the fracture sides apart, which relieves the contact and with it the
+ * friction that held the sides in place; a face that was stuck may slip.
+ * This is how injection triggers slip on faults, and it is the problem the
+ * library's poromechanics model solves. This program runs it on a small
+ * scene, step by step, and looks at the iteration that couples the two
+ * physics: why it is needed, why in its plain form it creeps, and how a
+ * few lines of Anderson acceleration cure it. The discrete energy balance
+ * of each step serves as the check that the coupled equations are
+ * consistent.
+ *
+ * The notation is that of step-2 and of doc/scheme.md §1: the fracture Γ
+ * has two sides ±, n^+ is the unit normal out of the + side, [u] = u^+ −
+ * u^- the jump, [u]_n = [u]·n^+ its normal part (negative where the
+ * fracture is open) and λ = −T^+ the contact traction.
+ *
+ *
+ * The coupled equations
+ * ---------------------
+ *
+ * The unknowns are the displacement u, the matrix pressure p_m in the
+ * porous rock Ω \ Γ and the fracture pressure p_f on Γ. The rock obeys the
+ * quasi-static momentum balance of Biot's theory,
+ *
+ *     −div(σ(u) − b p_m I) = f   in Ω \ Γ,   σ(u) = 2μ ε(u) + λ_L div(u) I,
+ *
+ * where b ∈ [0, 1] is the Biot coefficient: only the *effective* stress
+ * σ(u) deforms the skeleton, the pore pressure carries the rest of the
+ * total stress. On the fracture the fluid pushes both sides outwards: the
+ * traction on side ± is T^± = (σ(u) − b p_m I) n^± + p_f n^±, and the
+ * contact conditions of step-2 (Coulomb friction, with the slip increment
+ * of the time step) hold for λ = −T^+. A fracture pressure thus acts like
+ * a negative contact pressure: it unloads the contact, λ_n decreases, the
+ * friction threshold F λ_n decreases with it.
+ *
+ * The fluid obeys two mass balances. In the matrix, with the Darcy
+ * velocity V_m = −(K_m/η) ∇p_m (permeability K_m, viscosity η),
+ *
+ *     ∂_t φ + div V_m = h_m,    φ = φ^0 + b div(u − u^0) + (p_m − p_m^0)/M:
+ *
+ * the porosity φ grows when the skeleton expands (b div u) and when the
+ * fluid and the grains are compressed (1/M, the inverse Biot modulus). In
+ * the fracture, a (d−1)-dimensional channel of hydraulic aperture d_f,
+ *
+ *     ∂_t d_f + div_τ V_f − [[V_m]]_n = h_f,    V_f = −(d_f³/(12 η)) ∇_τ p_f,
+ *     d_f = d_0 − [u]_n:
+ *
+ * the fracture stores fluid by opening, conducts it along Γ by the cubic
+ * law of a flow between two plates, exchanges it with the matrix on both
+ * sides (the term [[V_m]]_n, a flux Λ_f (p_m − p_f) on each side), and
+ * receives the injection h_f. d_0 is the aperture of a closed fracture:
+ * rough walls leave channels even under contact, and −[u]_n ≥ 0 is the
+ * mechanical opening. The aperture is where the coupling is strongest:
+ * the same jump [u]_n that the contact conditions constrain is the storage
+ * term of the fracture, and its cube is the fracture's conductivity.
+ *
+ * The scheme (doc/scheme.md §5, §7) discretises u by the bubble-VEM of
+ * step-1 and step-2 and the pressures by the hybrid finite volume (HFV)
+ * method: one pressure per polytope, per face and per fracture face (and
+ * per fracture edge), with implicit Euler in time. The Biot terms are
+ * built from two sparse operators of the class BiotCoupling, the discrete
+ * divergence (D u)_K = |K| div_K u and the discrete normal jump (J u)_σ =
+ * |σ| [[u]]_σ·n^+: the momentum equation sees the pressures through b Dᵀ
+ * p_m − Jᵀ p_f, the mass balances see the displacement through b D(u −
+ * u^{n−1}) and −J(u − u^{n−1}). That the same two matrices appear on both
+ * sides, transposed, is what makes the discrete energy balance below
+ * close.
+ *
+ *
+ * The fixed-stress split
+ * ----------------------
+ *
+ * Each time step is a nonlinear system: contact and friction are
+ * nonlinear, and so is the cubic law. One could solve it monolithically by
+ * Newton's method, but the library solves it by alternating between the
+ * two physics, each with its own solver: the HFV flow by one linear solve
+ * (with the displacement, and so the aperture in the cubic law, of the
+ * last iterate), the contact mechanics by the semi-smooth Newton method of
+ * step-2 under the new pressures. Such a split iteration converges only if
+ * it is done right. The naive version (solve the flow with the last
+ * displacement, then the mechanics with the new pressure) can diverge,
+ * because the flow then does not know that a rising pressure expands the
+ * rock and so makes room for the fluid. The *fixed-stress* split (Kim,
+ * Tchelepi, Juanes 2011; convergence by Mikelić and Wheeler 2013) tells
+ * it: in the flow step of iteration k + 1 the matrix storage is augmented
+ * by a relaxation term,
+ *
+ *     (1/M) ∂_t p_m  →  (1/M) ∂_t p_m + L (p_m^{k+1} − p_m^k)/Δt,
+ *     L = b²/K_dr,   K_dr = λ_L + 2μ/d,
+ *
+ * the volume change that a pressure increment would cause if the mean
+ * total stress were held fixed (K_dr is the drained bulk modulus). With
+ * this L the iteration is a contraction, with a rate independent of the
+ * mesh size and the time step.
+ *
+ * The fracture needs the same treatment: a rising p_f opens the fracture
+ * and so increases its volume. The library relaxes each fracture face σ
+ * by a_σ (p_f^{k+1} − p_f^k)/Δt, where a_σ is the opening of σ under a unit
+ * pressure in all fractures with *every face free of contact*. The model
+ * measures a_σ once per mesh, by two elasticity solves (a probe of the
+ * elastic operator). It is an upper bound of what a face really opens,
+ * and for an open face it is about right.
+ *
+ *
+ * Why the plain iteration creeps, and Anderson acceleration
+ * ----------------------------------------------------------
+ *
+ * For a face in *contact* a_σ is far too large: the face does not open at
+ * all (its jump is held at [u]_n = 0 by the contact), so its true
+ * compliance is zero, and the relaxation term a_σ (p_f^{k+1} − p_f^k) is
+ * a brake that the physics does not ask for. The fixed-stress iteration
+ * still converges, because a larger relaxation than needed is safe (the
+ * contraction holds for every L above a threshold, with a rate that
+ * deteriorates as L grows), but the brake makes it slow: on the closed
+ * faces of the scene below the fracture pressure creeps up by about 2 per
+ * cent of the remaining distance in each iteration. The error of such an
+ * iteration behaves like that of a linear iteration x^{k+1} = G x^k + c with
+ * one eigenvalue of G close to 1: each iteration removes the same small
+ * fraction of the remaining error, in the same direction.
+ *
+ * Anderson acceleration (Anderson 1965; Walker and Ni, SIAM J. Numer.
+ * Anal. 49, 2011) exploits exactly this regularity. It keeps the last m
+ * iterates x_i and their images g_i = G(x_i) (here: x the pressures, G one
+ * flow solve followed by one mechanics solve), with residuals f_i = g_i −
+ * x_i, and takes as the next iterate
+ *
+ *     x^{k+1} = g_k − Σ_j γ_j (g_{j+1} − g_j),
+ *
+ * where γ minimises |f_k − Σ_j γ_j (f_{j+1} − f_j)|: the combination of
+ * the last steps whose linearised residual is smallest. For a linear map it
+ * is a Krylov method, equivalent to GMRES; a few slowly decaying
+ * directions, such as the creep of the closed faces, are found in a few
+ * iterations and removed. Its cost is negligible (a least-squares problem
+ * with m columns per iteration), it needs no derivative of G, and with
+ * m = 0 it is the plain iteration. The class AndersonAcceleration does
+ * this; PoromechanicsModel applies it to the pressures, with m = Nonlinear
+ * solver/Anderson depth.
+ *
+ * The iteration stops when max|Δu|/max|u| + max|Δp|/max|p| is at most the
+ * coupling tolerance, 1e-8 here, and the step fails if it has not after
+ * Maximum coupling iterations.
+ *
+ *
+ * The discrete energy balance
+ * ---------------------------
+ *
+ * How do we know that a converged step solved the right equations? Test
+ * the momentum balance with the displacement increment δu = u^n − u^{n−1},
+ * the mass balances with the pressures, and add up: the coupling terms,
+ * b p_m div δu from both sides and p_f [δu]_n from both sides, cancel
+ * exactly, because both equations use the same D and J (doc/energy.md
+ * §2, §3). What is left is the energy identity of the step,
+ *
+ *     E^n − E^{n−1} + D^n = W^n,
+ *
+ * with the stored energy E = ½ a_h(u, u) + Σ_K |K| p_K²/(2M) (elastic and
+ * fluid), the dissipation D^n ≥ 0 (viscous in the matrix and the
+ * fractures, matrix–fracture exchange, friction F λ_n |[δu]_τ|, numerical
+ * dissipation of implicit Euler) and the work W^n of the loads and the
+ * injection. PoromechanicsModel evaluates every term after each step and
+ * reports
+ *
+ *     energy residual = (E^n − E^{n−1} + D^n − W^n) / S^n,
+ *
+ * S^n the largest of the terms (doc/energy.md §4). On a converged step it
+ * is of the size of the coupling tolerance: it is at most 10 × tolerance,
+ * or else the model stops with a list of the terms, because a larger value
+ * means that the equations do not fit together (a missing term, a sign, a
+ * divergence assembled differently in the flow and in the mechanics). It
+ * sees everything at once: the friction term uses F λ_n |[δu]_τ| rather
+ * than λ_τ·[δu]_τ, so a violated friction law shows up too.
+ *
+ *
+ * What the program does
+ * ---------------------
+ *
+ * The scene, prm/step-3.prm, is a 2 m × 2 m block loaded by 4 MPa of
+ * compression and 1 MPa of shear on the top and 2 MPa of confinement on
+ * the sides, clamped at the bottom, with a fracture at 45° through the
+ * centre, Coulomb friction F = 0.5, into which fluid is injected at a
+ * constant rate (it is prm/poromechanics-2d-slip.prm on a coarser mesh).
+ * The program
+ *
+ *   1. builds the discretisation (LevelDiscretization, as in step-2);
+ *   2. tries the first time step with the plain fixed-stress iteration
+ *      (Anderson depth 0) and the iteration limit of the parameter file,
+ *      and checks that it fails;
+ *   3. runs the time loop twice with the library's PoromechanicsModel:
+ *      with Anderson acceleration and the limit of the file, and with the
+ *      plain iteration and a limit ten times larger;
+ *   4. prints the relative increments of the coupling iterations of the
+ *      first step with and without acceleration (StepReport keeps them),
+ *      and checks that the plain iteration creeps;
+ *   5. prints a table per step: the coupling iterations of both runs, the
+ *      face states, the mean fracture pressure and aperture, the energy
+ *      residuals; and checks the rest of what the introduction claims:
+ *      every step of both runs converges, Anderson needs fewer iterations
+ *      in every step, the two runs agree, the energy residual is within
+ *      its bound, faces open and slip.
+ */
+
+
+// @sect3{Include files}
+
+// As in step-2, this program assembles nothing itself. PoromechanicsModel
+// is the class behind `Model = poromechanics` of the polyfrac program; its
+// step() function advances the state by one implicit Euler step and
+// returns a StepReport with the iteration counts, face states, means and
+// the energy residual. The time loop around it, which the Simulator class
+// runs for the polyfrac program (with output files and time step halving),
+// is written out here.
+#include <deal.II/base/mpi.h>
+
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/base/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+// The parameter file read when none is given on the command line, as in
+// step-1 and step-2.
+#ifndef POLYFRAC_SOURCE_DIR
+#  define POLYFRAC_SOURCE_DIR "."
+#endif
+
+
+namespace Step3
+{
+  using namespace dealii;
+  using namespace PolyFrac;
+
+
+  // @sect3{The time loop}
+
+  // The time loop of one run: implicit Euler steps of size Time/Time step
+  // from t = 0 to Time/End time, at most @p max_steps of them. A new model is
+  // built for each run, so that each run starts from the initial state (u =
+  // 0, p = 0). The step reports are collected; a step that fails ends the
+  // run (the polyfrac program would halve the time step instead, and we
+  // want to see the failure). The one line that step() prints per step is
+  // not needed here: the program prints its own table.
+  template <int dim>
+  std::vector<StepReport>
+  run_time_loop(const Parameters               &prm,
+                const LevelDiscretization<dim> &discretization,
+                const unsigned int              max_steps)
+  {
+    PoromechanicsModel<dim> model(prm, discretization);
+    const unsigned int      n_steps = static_cast<unsigned int>(
+      std::round(prm.time.end_time / prm.time.time_step));
+
+    std::vector<StepReport> reports;
+    for (unsigned int n = 1; n <= std::min(n_steps, max_steps); ++n)
+      {
+        std::ostringstream step_log;
+        reports.push_back(model.step((n - 1) * prm.time.time_step,
+                                     n * prm.time.time_step,
+                                     step_log));
+        if (!reports.back().converged)
+          break;
+      }
+    return reports;
+  }
+
+
+  // @sect3{The history of the first step}
+
+  // The relative increments max|Δu|/max|u| + max|Δp|/max|p| of the coupling
+  // iterations of the first step, with and without acceleration, side by
+  // side for a selection of iterations; then the slowest mean factor by
+  // which the plain iteration's increment shrinks per iteration over ten
+  // consecutive iterations (the creep of the introduction), which run()
+  // checks.
+  double
+  print_first_step(const StepReport  &plain,
+                   const StepReport  &anderson,
+                   const unsigned int depth,
+                   std::ostream      &out)
+  {
+    const std::vector<double> &p = plain.coupling_increments;
+    const std::vector<double> &a = anderson.coupling_increments;
+    out << "First step, relative increment per coupling iteration:" << std::endl
+        << "     k        m=0        m=" << depth << std::endl
+        << std::scientific << std::setprecision(2);
+    for (unsigned int k = 1; k <= std::max(p.size(), a.size()); ++k)
+      if (k <= 3 || k % 5 == 0 || k == a.size())
+        {
+          out << std::setw(6) << k;
+          if (k <= p.size())
+            out << std::setw(11) << p[k - 1];
+          else
+            out << std::setw(11) << "";
+          if (k <= a.size())
+            out << std::setw(11) << a[k - 1];
+          out << std::endl;
+        }
+    // The slowest stretch of ten iterations of the plain iteration (from
+    // iteration 3 on; the first two only find the order of magnitude).
+    double       factor = 0;
+    unsigned int start  = 0;
+    for (unsigned int k = 2; k + 10 < p.size(); ++k)
+      if (std::pow(p[k + 10] / p[k], 0.1) > factor)
+        {
+          factor = std::pow(p[k + 10] / p[k], 0.1);
+          start  = k + 1;
+        }
+    out << std::fixed << std::setprecision(3)
+        << "Plain iteration: slowest stretch of ten iterations " << start << "-"
+        << start + 10 << ", the increment shrinks by a factor " << factor
+        << " per iteration" << std::defaultfloat << std::setprecision(6)
+        << std::endl;
+    return factor;
+  }
+
+
+  // @sect3{The table}
+
+  // One row per step: the coupling iterations of the Anderson run and of
+  // the plain run, the Newton iterations of the contact solves of the
+  // Anderson run (summed over its coupling iterations), the face states at
+  // the end of the step, the mean fracture pressure in MPa and the mean
+  // aperture d_f in mm (area weighted), and the energy residual.
+  void
+  print_table(const std::vector<StepReport> &anderson,
+              const std::vector<StepReport> &plain,
+              const double                   time_step,
+              const unsigned int             depth,
+              std::ostream                  &out)
+  {
+    out << "     t   iterations   Newton   faces open/stick/slip   "
+           "mean p_f    mean d_f   energy residual"
+        << std::endl
+        << "        m=" << depth << "    m=0      m=" << depth
+        << "                            (MPa)       (mm)       m=" << depth
+        << "      m=0" << std::endl;
+    for (unsigned int n = 0; n < std::min(anderson.size(), plain.size()) &&
+                             anderson[n].converged && plain[n].converged;
+         ++n)
+      {
+        const StepReport &a = anderson[n];
+        out << std::setw(6) << (n + 1) * time_step << std::setw(7)
+            << *a.coupling_iterations << std::setw(7)
+            << *plain[n].coupling_iterations << std::setw(9)
+            << *a.newton_iterations << std::setw(13) << *a.n_open << " / "
+            << *a.n_stick << " / " << *a.n_slip << std::fixed
+            << std::setprecision(4) << std::setw(13)
+            << *a.mean_fracture_pressure / 1e6 << std::setw(11)
+            << *a.mean_aperture * 1e3 << std::scientific << std::setprecision(1)
+            << std::setw(11) << *a.energy_residual << std::setw(9)
+            << *plain[n].energy_residual << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+      }
+  }
+
+
+  // @sect3{The checks}
+
+  // What the introduction claims, asserted on the two runs. Every step of
+  // both runs converged (run_time_loop stops at a failed step, so a short
+  // list is a failure); the plain iteration needed more coupling
+  // iterations than the accelerated one in every step; both runs found the
+  // same solution, to a multiple of the coupling tolerance in the mean
+  // fracture pressure; the energy balance holds to 10 × tolerance in every
+  // step of both runs (the model itself stops otherwise, but this program
+  // does not take that on trust); and the scene does what it is meant to
+  // show: faces open, and some face slips in some step.
+  void
+  check_runs(const Parameters              &prm,
+             const std::vector<StepReport> &anderson,
+             const std::vector<StepReport> &plain,
+             std::ostream                  &out)
+  {
+    const unsigned int n_steps = static_cast<unsigned int>(
+      std::round(prm.time.end_time / prm.time.time_step));
+    AssertThrow(anderson.size() == n_steps && anderson.back().converged,
+                ExcMessage("A step of the run with Anderson acceleration "
+                           "did not converge: " +
+                           anderson.back().failure));
+    AssertThrow(plain.size() == n_steps && plain.back().converged,
+                ExcMessage("A step of the plain run did not converge even "
+                           "with the larger iteration limit: " +
+                           plain.back().failure));
+
+    const double tolerance = prm.nonlinear.coupling_tolerance;
+    const double bound =
+      10 * std::max(prm.nonlinear.coupling_tolerance, prm.nonlinear.tolerance);
+    double       max_residual = 0, max_difference = 0;
+    unsigned int slip_steps = 0, open_steps = 0;
+    for (unsigned int n = 0; n < n_steps; ++n)
+      {
+        AssertThrow(*anderson[n].coupling_iterations <
+                      *plain[n].coupling_iterations,
+                    ExcMessage("In step " + std::to_string(n + 1) +
+                               ", Anderson acceleration did not need fewer "
+                               "coupling iterations than the plain "
+                               "iteration."));
+        for (const StepReport *report : {&anderson[n], &plain[n]})
+          max_residual =
+            std::max(max_residual, std::abs(*report->energy_residual));
+        max_difference =
+          std::max(max_difference,
+                   std::abs(*anderson[n].mean_fracture_pressure -
+                            *plain[n].mean_fracture_pressure) /
+                     std::abs(*anderson[n].mean_fracture_pressure));
+        slip_steps += (*anderson[n].n_slip > 0);
+        open_steps += (*anderson[n].n_open > 0);
+      }
+    AssertThrow(max_residual <= bound,
+                ExcMessage("The energy residual exceeds its bound."));
+    AssertThrow(max_difference <= 100 * tolerance,
+                ExcMessage("The two runs disagree in the mean fracture "
+                           "pressure by more than 100 x the coupling "
+                           "tolerance."));
+    AssertThrow(slip_steps > 0 && open_steps == n_steps,
+                ExcMessage("The scene is meant to have open faces in every "
+                           "step and slipping faces in some: it has not."));
+
+    out << "Both runs converged in every step; the plain iteration needed "
+           "more iterations in every step"
+        << std::endl
+        << std::scientific << std::setprecision(0)
+        << "Mean p_f of the two runs: relative difference at most "
+        << max_difference << " (bound " << 100 * tolerance << ")" << std::endl
+        << "Energy residual of both runs: at most " << max_residual
+        << " in magnitude (bound " << bound << ")" << std::defaultfloat
+        << std::setprecision(6) << std::endl
+        << "Faces slip in " << slip_steps << " of " << n_steps
+        << " steps, faces are open in every step" << std::endl;
+  }
+
+
+  // @sect3{The run() function}
+
+  template <int dim>
+  void
+  run(const Parameters &prm, std::ostream &out)
+  {
+    AssertThrow(prm.model == "poromechanics",
+                ExcMessage("step-3 solves Model = poromechanics."));
+    AssertThrow(prm.nonlinear.anderson_depth > 0,
+                ExcMessage("step-3 compares Anderson acceleration with the "
+                           "plain iteration: set Nonlinear solver/Anderson "
+                           "depth > 0."));
+
+    // Step 1: the discretisation, on level 0 of the scene.
+    const LevelDiscretization<dim> discretization(prm, 0);
+    out << "Mesh: " << discretization.geometry->mesh.n_cells() << " polytopes, "
+        << discretization.network->n_fracture_faces() << " fracture faces"
+        << std::endl;
+
+    // Step 2: the plain iteration on the first step, with the iteration
+    // limit of the file. The parameters are a plain struct; a copy with
+    // another Anderson depth (and below, another iteration limit) makes
+    // the plain variant.
+    Parameters plain_prm               = prm;
+    plain_prm.nonlinear.anderson_depth = 0;
+    const std::vector<StepReport> first =
+      run_time_loop(plain_prm, discretization, 1);
+    AssertThrow(!first[0].converged,
+                ExcMessage("The first step converged without Anderson "
+                           "acceleration; the program is meant to show "
+                           "that it does not."));
+    out << "First step, plain iteration (m = 0): " << first[0].failure
+        << std::endl;
+
+    // Step 3: the two runs. With ten times the iteration limit the plain
+    // iteration gets there too, and we can count what it costs.
+    const std::vector<StepReport> anderson =
+      run_time_loop(prm, discretization, numbers::invalid_unsigned_int);
+    plain_prm.nonlinear.max_coupling_iterations *= 10;
+    const std::vector<StepReport> plain =
+      run_time_loop(plain_prm, discretization, numbers::invalid_unsigned_int);
+
+    // Step 4: the increments of the first step, the table of all steps
+    // and the checks. The tables come first, so that a failing check can be
+    // understood from them. The plain iteration must creep: on its slowest
+    // stretch of ten iterations its increment shrinks by less than 10 % per
+    // iteration.
+    if (anderson[0].converged)
+      {
+        const double factor = print_first_step(first[0],
+                                               anderson[0],
+                                               prm.nonlinear.anderson_depth,
+                                               out);
+        AssertThrow(factor > 0.9,
+                    ExcMessage("The plain iteration of the first step does "
+                               "not creep: its increment shrinks by more "
+                               "than 10 % per iteration."));
+      }
+    out << "Time loop, m = " << prm.nonlinear.anderson_depth << " (at most "
+        << prm.nonlinear.max_coupling_iterations
+        << " iterations) and m = 0 (at most "
+        << plain_prm.nonlinear.max_coupling_iterations << "):" << std::endl;
+    print_table(
+      anderson, plain, prm.time.time_step, prm.nonlinear.anderson_depth, out);
+    check_runs(prm, anderson, plain, out);
+  }
+} // namespace Step3
+
+
+// @sect3{The main function}
+
+// As in step-1 and step-2: `step-3 [FILE.prm] [--set Subsection/Entry=value
+// ...]`.
+int
+main(int argc, char **argv)
+{
+  using namespace Step3;
+  try
+    {
+      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      const Parameters                 prm =
+        Parameters::from_command_line(argc,
+                                      argv,
+                                      POLYFRAC_SOURCE_DIR "/prm/step-3.prm");
+      for (const std::string &warning : prm.warnings)
+        std::cout << "Warning: " << warning << std::endl;
+
+      if (prm.dim == 2)
+        run<2>(prm, std::cout);
+      else
+        run<3>(prm, std::cout);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << std::endl << "step-3 stopped: " << e.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
+
+
+// clang-format off
+/*
+ * Results
+ * =======
+ *
+ * `./step-3` (prm/step-3.prm; Release build, deal.II 9.4, about 2 seconds
+ * in all, of which the plain run takes most) prints
+ *
+ *   Mesh: 288 polytopes, 6 fracture faces
+ *   First step, plain iteration (m = 0): the fixed-stress iterations did not converge in 50
+ *     iterations (last relative increment 1.39727e-06, Nonlinear solver/Coupling tolerance 1e-08).
+ *   First step, relative increment per coupling iteration:
+ *        k        m=0        m=5
+ *        1   2.00e+00   2.00e+00
+ *        2   1.26e+00   1.00e+00
+ *        3   1.65e-01   1.00e+00
+ *        5   1.42e-02   1.02e+00
+ *       10   1.22e-02   2.91e-01
+ *       15   1.07e-02   6.25e-03
+ *       20   9.38e-03   3.56e-04
+ *       25   6.17e-03   3.50e-07
+ *       27   3.17e-03   5.91e-09
+ *       30   1.16e-03
+ *       35   2.16e-04
+ *       40   4.02e-05
+ *       45   7.50e-06
+ *       50   1.40e-06
+ *   Plain iteration: slowest stretch of ten iterations 13-23, the increment shrinks by a factor 0.983 per iteration
+ *   Time loop, m = 5 (at most 50 iterations) and m = 0 (at most 500):
+ *        t   iterations   Newton   faces open/stick/slip   mean p_f    mean d_f   energy residual
+ *           m=5    m=0      m=5                            (MPa)       (mm)       m=5      m=0
+ *        1     27     65      104            4 / 0 / 2       1.6202     0.1500    5.8e-11 -3.0e-09
+ *        2     11     40       35            4 / 2 / 0       1.6023     0.1534    8.0e-11  5.0e-09
+ *        3      9     34       18            4 / 2 / 0       1.6079     0.1556    1.2e-11 -6.7e-09
+ *        4      9     35       27            4 / 1 / 1       1.6147     0.1577   -8.7e-11 -6.9e-09
+ *        5     10     22       28            5 / 1 / 0       1.6207     0.1599   -1.0e-10 -2.7e-09
+ *        6      8     20       16            5 / 1 / 0       1.6244     0.1621    7.9e-11 -2.5e-09
+ *        7      8     20       16            5 / 1 / 0       1.6282     0.1643    2.1e-11 -2.5e-09
+ *        8      9     20       25            5 / 0 / 1       1.6321     0.1665    9.7e-12 -2.9e-09
+ *        9      8     20       16            5 / 0 / 1       1.6360     0.1687   -2.1e-10 -2.8e-09
+ *       10      8     20       24            5 / 0 / 1       1.6398     0.1709   -2.0e-10 -2.7e-09
+ *   Both runs converged in every step; the plain iteration needed more iterations in every step
+ *   Mean p_f of the two runs: relative difference at most 2e-07 (bound 1e-06)
+ *   Energy residual of both runs: at most 7e-09 in magnitude (bound 1e-07)
+ *   Faces slip in 5 of 10 steps, faces are open in every step
+ *
+ *
+ * The first step
+ * --------------
+ *
+ * The initial state is u = 0, p = 0; the first step applies the loads and
+ * starts the injection at once. The boundary loads, resolved on the 45°
+ * plane, give roughly a compression of 2 MPa and a shear of 1 MPa, at the
+ * Coulomb threshold F · 2 MPa: without fluid the fracture would be on the
+ * verge of slipping. In the first step the fracture pressure rises from
+ * 0 to 1.6 MPa in the mean, four faces open and the other two slip. The plain
+ * fixed-stress iteration gets the order of magnitude in three iterations
+ * (the increment falls from 2 to 0.17) and then creeps: from iteration 5
+ * to iteration 23 its increment only falls from 1.4e-2 to about 8e-3,
+ * by a factor 0.983 per iteration on the slowest stretch (the program
+ * checks that it is above 0.9). This is the regime of the introduction:
+ * the faces are still in contact, their relaxation a_σ is that of a free
+ * face, and each iteration moves the fracture pressure by a few per cent
+ * of the remaining distance. Only then does it speed up (a factor of about
+ * 0.7 per iteration from iteration 25 on; presumably the faces that end
+ * the step open have opened and their a_σ is now about right), and with
+ * 1.4e-6 at iteration 50 it gives up. With ten times the limit it
+ * converges in 65 iterations. The polyfrac program, which halves a step
+ * that fails, does no better: on prm/poromechanics-2d-slip.prm (the same
+ * scene on 16 × 16 squares) the plain iteration fails the first step ten
+ * times, down to Δt ≈ 1e-3: smaller steps do not cure the creep.
+ *
+ * Anderson acceleration behaves differently. Its increment stays at about 1 for
+ * iterations 2-5: a relative increment of 1 means that the iterate changes as
+ * much as its own size, which we read as the contact states of the faces
+ * changing under rather different pressures (the step's 104 Newton iterations,
+ * four per coupling iteration where two suffice once the states are fixed,
+ * point the same way). Once the states are settled, the least-squares
+ * combination of the last five steps captures the slow direction and the
+ * increment drops superlinearly: 0.29, 6e-3, 4e-4, 4e-7 and 6e-9 at iterations
+ * 10, 15, 20, 25 and 27.
+ *
+ *
+ * The time loop
+ * -------------
+ *
+ * After the first step both iterations start from a good guess, the
+ * previous state, and the difference is a constant factor: Anderson needs
+ * 8-11 coupling iterations per step, the plain iteration 20-40, two to
+ * four times more. The contact Newton iterations (two per coupling
+ * iteration when no face changes state, more when one does) follow the
+ * coupling iterations.
+ *
+ * The physics. The mean fracture pressure peaks in the first step (1.620
+ * MPa), drops a little in the second (1.602 MPa), while the fracture goes
+ * on opening, and then rises slowly, by about 0.004 MPa per second. The
+ * mean aperture grows from the 0.1 mm of a closed fracture by about 2.2e-3
+ * mm per second, close to the 2e-3 m³ per m² injected per second (2e-3 mm
+ * per second of fluid height): the injected fluid is stored mainly by
+ * opening the fracture; the tight matrix (1e-17 m²) takes little of it.
+ * Four, later five faces are open. The two faces in contact after the
+ * first step, which slipped in it, both stick in steps 2-3 (the Coulomb
+ * law acts on the slip *increment* of the step, and with the pressure
+ * nearly constant the load on them hardly changes); in step 4 one of them
+ * slips again, in step 5 one opens and the other sticks, and from step 8
+ * on the last face in contact slips in every step as the rising pressure
+ * unloads it. Faces slip in 5 of the 10 steps.
+ *
+ * The energy balance. The residual is at most 2.1e-10 in magnitude with
+ * Anderson and 7e-9 with the plain iteration, far below the bound 1e-7.
+ * It measures how well the step's coupled equations hold, not a
+ * discretisation error: run with `--set "Nonlinear solver/Coupling
+ * tolerance=1e-12"` (the polyfrac program reports the same numbers in its
+ * time series) and it falls to about 1e-14, at the cost of 32 iterations
+ * in the first step and 12-15 in the others. The plain iteration's
+ * residual is the larger of the two because its stopping test is weaker:
+ * for an iteration that contracts by ρ per iteration the error is about
+ * ρ/(1 − ρ) times the last increment, which for a creeping iteration is
+ * much more than the increment, while Anderson's last increments fall
+ * superlinearly. For the same reason the two runs agree to 2e-7 in the
+ * mean fracture pressure, not to 1e-8 (the program allows 100 × the
+ * tolerance).
+ *
+ *
+ * Possibilities for extensions
+ * ----------------------------
+ *
+ * The relaxation a_σ is the crux. It is measured with every face free; for a
+ * face in contact, sticking or slipping, the right value is zero, since the
+ * contact holds its normal jump at [u]_n = 0. A relaxation that follows the
+ * contact states of the last iterate might make the plain iteration fast as
+ * well, at the price of a contraction that is no longer guaranteed when the
+ * states change; comparing the two, with and without Anderson acceleration, is
+ * an instructive experiment (the relaxation is computed inside
+ * PoromechanicsModel, so trying it means copying that class into this program).
+ *
+ * Try the Anderson depth: with `--set "Nonlinear solver/Anderson depth=2"` the
+ * run needs 26 iterations in the first step and 9-12 in the others, nearly as
+ * few as with depth 5, while depth 1 still fails the first step. Make the
+ * matrix impermeable (`--set "Flow/Permeability=0"`): the fluid then has
+ * nowhere to go but into the fracture, and the coupling is at its strongest;
+ * there even the accelerated iteration fails the first step (increment 4e-6
+ * after 50 iterations), an open problem of the library's fixed-stress solver
+ * and a good one to study with this program. Refine the mesh (`--set
+ * "Mesh/Subdivisions=24, 24"`): the fracture has more faces, the states more
+ * ways to change, but in theory the fixed-stress rate does not depend on h.
+ * Finally, the monolithic alternative: one Newton method for u, λ and p
+ * together, with the fracture aperture's cube differentiated, would converge
+ * quadratically near the solution; it is the subject of future work in the
+ * library.
+ */
+// clang-format on
