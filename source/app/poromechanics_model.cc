@@ -242,7 +242,6 @@ namespace PolyFrac
       coupling.volume_changes(start.displacement);
     const std::vector<double> pk = flow.cell_pressures(p_k);
     const std::vector<double> p0 = flow.cell_pressures(p_start);
-    data.increment_mobility      = increment_mobility(time_step);
     for (unsigned int c = 0; c < data.storage.size(); ++c)
       {
         const double measure = discretization.geometry->cells[c].measure;
@@ -320,6 +319,8 @@ namespace PolyFrac
     double               increment = 0;
     FlowStepData         data;
     AndersonAcceleration anderson(prm.nonlinear.anderson_depth);
+    // The mobility of the pressure increment depends on Δt only.
+    const std::vector<double> stabilisation = increment_mobility(time_step);
     try
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_coupling_iterations;
@@ -327,6 +328,7 @@ namespace PolyFrac
           {
             data =
               fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
+            data.increment_mobility = stabilisation;
             Vector<double> image;
             flow.solve_step(data, pressure, image);
             const Vector<double> p_next = anderson.next(p_k, image);
@@ -368,7 +370,6 @@ namespace PolyFrac
         return report;
       }
 
-    elasticity.set_time(t_new);
     report.energy_residual = energy_residual(data, u_k, p_k);
     state                  = u_k;
     pressure               = p_k;
