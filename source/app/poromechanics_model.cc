@@ -59,7 +59,9 @@ namespace PolyFrac
     , pressure(flow.initial_pressure())
   {
     state.displacement.reinit(discretization.dofs->n_displacement_dofs());
-    state.multipliers.resize(discretization.network->n_fracture_faces());
+    for (unsigned int i = 0; i < discretization.network->n_fracture_faces();
+         ++i)
+      state.multipliers.push_back(elasticity.in_situ_traction(i));
     if (prm.exact.analytic_solution != "none")
       use_analytic_solution();
     initial_cell_pressure = flow.cell_pressures(pressure);
@@ -260,9 +262,15 @@ namespace PolyFrac
     for (unsigned int i = 0; i < d_k.size(); ++i)
       {
         data.apertures[i]        = d_k[i];
-        data.fracture_storage[i] = fracture_relaxation[i];
+        // A face in contact keeps its normal jump whatever p_f is: its
+        // relaxation is 0, an open face's the probed compliance.
+        const double a = u_k.contact.normal.empty() ||
+                             u_k.contact.normal[i] == NormalState::open ?
+                           fracture_relaxation[i] :
+                           0.;
+        data.fracture_storage[i] = a;
         data.fracture_rhs[i] =
-          (fracture_relaxation[i] * (pf_k[i] - pf_0[i]) - (d_k[i] - d_0[i])) /
+          (a * (pf_k[i] - pf_0[i]) - (d_k[i] - d_0[i])) /
           time_step;
       }
     return data;
@@ -319,6 +327,7 @@ namespace PolyFrac
     double               increment = 0;
     FlowStepData         data;
     AndersonAcceleration anderson(prm.nonlinear.anderson_depth);
+    std::vector<NormalState> previous_normal;
     // The mobility of the pressure increment depends on Δt only.
     const std::vector<double> stabilisation = increment_mobility(time_step);
     try
@@ -331,6 +340,12 @@ namespace PolyFrac
             data.increment_mobility = stabilisation;
             Vector<double> image;
             flow.solve_step(data, pressure, image);
+            // A change of the contact states changes a_σ, and with it the
+            // map whose fixed point Anderson extrapolates: its history is
+            // then of another map.
+            if (u_k.contact.normal != previous_normal)
+              anderson.clear();
+            previous_normal = u_k.contact.normal;
             const Vector<double> p_next = anderson.next(p_k, image);
             MechanicalState<dim> u_next;
             *report.newton_iterations +=

@@ -397,7 +397,7 @@ namespace PolyFrac
       }
     for (const auto &[row, column, value] : coupling)
       reduced.add(row, column, value);
-    matrix.reinit(reduced);
+    matrix.reinit(reduced, 0.); // no (absolute) drop tolerance
   }
 
 
@@ -407,6 +407,7 @@ namespace PolyFrac
   FaceCondensation<dim>::solve(
     const std::vector<FaceLinearisation<dim>> &linearisation,
     const Vector<double>                      &residual,
+    const double                               enough,
     Vector<double>                            &step)
   {
     Assert(condensable(linearisation), ExcInternalError());
@@ -466,12 +467,12 @@ namespace PolyFrac
     Vector<double> y(n_u);
     KrylovSolve    krylov{"CG", 0, true};
     if (symmetric)
-      krylov.iterations = solve_cg_amg(matrix, y, rhs, dofs, vertices, solver);
+      krylov.iterations = solve_cg_amg(matrix, y, rhs, dofs, vertices, solver, enough);
     else
       {
         krylov.method = "GMRES";
         std::tie(krylov.iterations, krylov.converged) =
-          solve_gmres_amg(matrix, y, rhs, dofs, vertices, solver);
+          solve_gmres_amg(matrix, y, rhs, dofs, vertices, solver, enough);
         if (!krylov.converged)
           return krylov;
       }

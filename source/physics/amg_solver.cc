@@ -9,6 +9,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <memory>
 
 namespace PolyFrac
@@ -132,12 +133,13 @@ namespace PolyFrac
                      const Vector<double>                 &rhs,
                      const DoFMap<dim>                    &dofs,
                      const std::vector<Point<dim>>        &vertices,
-                     const Parameters::SolverData         &solver)
+                     const Parameters::SolverData         &solver,
+                     const double                          enough)
     {
       TrilinosWrappers::PreconditionAMG amg;
       initialize_amg(amg, matrix, dofs, vertices);
       SolverControl control(solver.max_iterations,
-                            solver.tolerance * rhs.l2_norm());
+                            std::max(solver.tolerance * rhs.l2_norm(), enough));
       try
         {
           if (symmetric)
@@ -165,10 +167,11 @@ namespace PolyFrac
                const Vector<double>                 &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
-               const Parameters::SolverData         &solver)
+               const Parameters::SolverData         &solver,
+               const double                          enough)
   {
     const auto [control, converged] =
-      solve_krylov_amg(true, matrix, x, rhs, dofs, vertices, solver);
+      solve_krylov_amg(true, matrix, x, rhs, dofs, vertices, solver, enough);
     AssertThrow(converged,
                 ExcMessage("The AMG-preconditioned CG solver did not "
                            "converge in " +
@@ -189,10 +192,11 @@ namespace PolyFrac
                   const Vector<double>                 &rhs,
                   const DoFMap<dim>                    &dofs,
                   const std::vector<Point<dim>>        &vertices,
-                  const Parameters::SolverData         &solver)
+                  const Parameters::SolverData         &solver,
+                  const double                          enough)
   {
     const auto [control, converged] =
-      solve_krylov_amg(false, matrix, x, rhs, dofs, vertices, solver);
+      solve_krylov_amg(false, matrix, x, rhs, dofs, vertices, solver, enough);
     return {control.last_step(), converged};
   }
 
@@ -204,26 +208,30 @@ namespace PolyFrac
                const Vector<double> &,
                const DoFMap<2> &,
                const std::vector<Point<2>> &,
-               const Parameters::SolverData &);
+               const Parameters::SolverData &,
+               const double);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
                const Vector<double> &,
                const DoFMap<3> &,
                const std::vector<Point<3>> &,
-               const Parameters::SolverData &);
+               const Parameters::SolverData &,
+               const double);
   template std::pair<unsigned int, bool>
   solve_gmres_amg(const TrilinosWrappers::SparseMatrix &,
                   Vector<double> &,
                   const Vector<double> &,
                   const DoFMap<2> &,
                   const std::vector<Point<2>> &,
-                  const Parameters::SolverData &);
+                  const Parameters::SolverData &,
+               const double);
   template std::pair<unsigned int, bool>
   solve_gmres_amg(const TrilinosWrappers::SparseMatrix &,
                   Vector<double> &,
                   const Vector<double> &,
                   const DoFMap<3> &,
                   const std::vector<Point<3>> &,
-                  const Parameters::SolverData &);
+                  const Parameters::SolverData &,
+               const double);
 } // namespace PolyFrac

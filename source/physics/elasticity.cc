@@ -361,6 +361,17 @@ namespace PolyFrac
 
 
   template <int dim>
+  Tensor<1, dim>
+  Elasticity<dim>::in_situ_traction(const unsigned int i) const
+  {
+    const unsigned int f = network.fracture_faces[i].face;
+    return -(initial_stress_value(geometry.faces[f].centroid) *
+             network.normal(i));
+  }
+
+
+
+  template <int dim>
   Tensor<2, dim>
   Elasticity<dim>::initial_stress_value(const Point<dim> &x) const
   {

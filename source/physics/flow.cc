@@ -383,7 +383,9 @@ namespace PolyFrac
     else
       {
         TrilinosWrappers::SparseMatrix trilinos_matrix;
-        trilinos_matrix.reinit(matrix);
+        // No drop tolerance: Trilinos' default, 1e-13, is absolute, and
+        // the flow coefficients (k/μ = 1e-12 m²/(Pa s)) lie below it.
+        trilinos_matrix.reinit(matrix, 0.);
         TrilinosWrappers::PreconditionAMG                 amg;
         TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
         amg_data.elliptic = true;

@@ -2,7 +2,7 @@
 # Compares two runs of one scene: as it is (A) and with extra --set
 # arguments (B). CHECK is one of
 #   equal=TOL            B's convergence table equals A's (columns level to
-#                        err_lambda_l2 of convergence.csv; the Newton
+#                        err_fracture_pressure of convergence.csv; the Newton
 #                        iterations and wall times may differ) to the
 #                        relative tolerance TOL, by numdiff;
 #   smaller=COLUMN:F     on every level, B's error COLUMN is at most F times
@@ -25,7 +25,7 @@ run() {
   "$polyfrac" "$prm" "${common[@]}" --set "Output/Output directory=$dir" \
     --set "Output/Write VTU=false" "$@" > "$dir.log" 2>&1 ||
     { cat "$dir.log"; echo "run $dir failed"; exit 1; }
-  cut -d, -f1-9 "$dir/convergence.csv" > "$dir.csv"
+  cut -d, -f1-11 "$dir/convergence.csv" > "$dir.csv"
 }
 run a
 run b "$@"

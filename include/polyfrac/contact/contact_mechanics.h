@@ -177,6 +177,8 @@ namespace PolyFrac
     {
       Vector<double>                      vector;
       double                              momentum, complementarity;
+      /** The norm that `momentum` is relative to (the load's). */
+      double                              momentum_scale;
       std::vector<NormalState>            normal;
       std::vector<TangentialState>        tangential;
       std::vector<FaceLinearisation<dim>> faces;
@@ -194,7 +196,10 @@ namespace PolyFrac
      * The Newton step for @p R: condensed face by face and solved by
      * AMG-preconditioned CG, or GMRES when a Coulomb face slips in contact
      * (Linear solver/Method = AMG, when every face allows it), else
-     * UMFPACK on the saddle point, also when GMRES does not converge.
+     * UMFPACK on the saddle point, also when GMRES does not converge. The
+     * Krylov solvers stop once their residual is a tenth of what the
+     * Newton test accepts (Nonlinear solver/Tolerance times the load's
+     * norm): solving the step further gains nothing.
      * Returns how the step was solved (one line; empty for Method =
      * direct).
      */

@@ -108,11 +108,14 @@ namespace PolyFrac
     /**
      * The Newton step (du, dλ) for the residual @p residual of the
      * saddle-point system with the face conditions @p linearisation, and
-     * how it was solved.
+     * how it was solved. The Krylov solver stops at `Linear
+     * solver/Tolerance` relative to its right-hand side or, earlier, at the
+     * residual @p enough (an inexact Newton step).
      */
     KrylovSolve
     solve(const std::vector<FaceLinearisation<dim>> &linearisation,
           const Vector<double>                      &residual,
+          const double                               enough,
           Vector<double>                            &step);
 
   private:

@@ -22,8 +22,9 @@ namespace PolyFrac
    * @p dofs (node sides, then bubbles); rows fixed by constraints stay in
    * the matrix as decoupled diagonal rows. Returns the number of CG
    * iterations; throws an error that names the remedies when CG does not
-   * reach `Linear solver/Tolerance` (relative to |rhs|) within
-   * `Linear solver/Maximum iterations`.
+   * reach `Linear solver/Tolerance` (relative to |rhs|), or the residual
+   * @p enough if that is larger, within `Linear solver/Maximum
+   * iterations`.
    *
    * Used for the elasticity system and for the condensed Newton steps of
    * contact mechanics (FaceCondensation).
@@ -35,15 +36,16 @@ namespace PolyFrac
                const Vector<double>                 &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
-               const Parameters::SolverData         &solver);
+               const Parameters::SolverData         &solver,
+               const double                          enough = 0.);
 
   /**
    * Solves the non-symmetric @p matrix @p x = @p rhs (the condensed Newton
    * step of contact mechanics when a Coulomb face slips in contact) by
    * restarted GMRES, right-preconditioned with the AMG of solve_cg_amg()
    * built on @p matrix itself. Returns the number of iterations and
-   * whether GMRES reached `Linear solver/Tolerance` (relative to |rhs|)
-   * within `Linear solver/Maximum iterations`; the caller decides what
+   * whether GMRES reached `Linear solver/Tolerance` (relative to |rhs|),
+   * or the residual @p enough if that is larger, within `Linear solver/Maximum iterations`; the caller decides what
    * to do otherwise.
    */
   template <int dim>
@@ -53,7 +55,8 @@ namespace PolyFrac
                   const Vector<double>                 &rhs,
                   const DoFMap<dim>                    &dofs,
                   const std::vector<Point<dim>>        &vertices,
-                  const Parameters::SolverData         &solver);
+                  const Parameters::SolverData         &solver,
+                  const double                          enough = 0.);
 } // namespace PolyFrac
 
 #endif

@@ -107,6 +107,15 @@ namespace PolyFrac
     Tensor<1, dim>
     prescribed_traction(const unsigned int i) const;
 
+    /**
+     * The traction −σ0(x̄_σ) n^+ of the in-situ stress (Initial
+     * stress/Stress) on fracture face @p i: the contact multiplier that
+     * holds the unloaded rock in equilibrium, a start for the first
+     * contact solve.
+     */
+    Tensor<1, dim>
+    in_situ_traction(const unsigned int i) const;
+
     /** The Dirichlet constraints of the node sides (values g_D). */
     void
     make_constraints();
