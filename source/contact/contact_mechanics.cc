@@ -122,10 +122,15 @@ namespace PolyFrac
   ContactMechanics<dim>::set_loads(const double          t,
                                    const Vector<double> &additional_load)
   {
-    elasticity.set_time(t);
-    make_dirichlet_values();
-    load_vector = 0;
-    elasticity.assemble_load(load_vector);
+    if (t != load_time)
+      {
+        elasticity.set_time(t);
+        make_dirichlet_values();
+        elastic_load.reinit(load_vector.size());
+        elasticity.assemble_load(elastic_load);
+        load_time = t;
+      }
+    load_vector = elastic_load;
     for (unsigned int k = 0; k < additional_load.size(); ++k)
       load_vector(k) += additional_load(k);
     compute_load_norm();

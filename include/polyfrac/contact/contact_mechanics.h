@@ -10,6 +10,7 @@
 #include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/physics/elasticity.h>
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -252,6 +253,9 @@ namespace PolyFrac
     SparseMatrix<double> stiffness;
     Vector<double>       load_vector;
     double               load_norm;
+    /** The loads of Elasticity at time load_time (set_loads() reuses them). */
+    Vector<double> elastic_load;
+    double         load_time = std::numeric_limits<double>::quiet_NaN();
 
     /** The condensed Newton steps (Linear solver/Method = AMG). */
     std::unique_ptr<FaceCondensation<dim>> condensation;
