@@ -7,8 +7,9 @@ usage: benchmarks/render_fracture_jumps.py PREFIX INPUT [INPUT ...]
 INPUT is a fracture VTU (fractures-level-K-NNNN.vtu) or its series
 (fractures-level-K.pvd, whose last step is drawn); each INPUT is one panel,
 side by side on a shared colour scale (e.g. the 47k and the 127k mesh).
-Writes PREFIX-normal-jump.png, PREFIX-tangential-jump.png and, for
-contact mechanics, PREFIX-states.png (open / stick / slip). Options
+Writes PREFIX-normal-jump.png, PREFIX-tangential-jump.png, for
+contact mechanics PREFIX-states.png (open / stick / slip) and, for
+poromechanics, PREFIX-fracture-pressure.png. Options
 (before the arguments): --labels "47k cells;127k cells" names the panels,
 --view ELEV,AZIM sets the camera (degrees, default 22,-60), --dpi N.
 
@@ -17,7 +18,7 @@ the constant fields fracture, n_plus, jump, normal_jump = [u].n+,
 tangential_jump = [u] - ([u].n+) n+ (global components), traction,
 normal_traction, tangential_traction and, for contact mechanics,
 normal_state (0 open, 1 contact) and tangential_state (0 stick, 1 slip,
-2 free). Needs Debian's python3-meshio, python3-numpy and
+2 free), and for poromechanics fracture_pressure and aperture. Needs Debian's python3-meshio, python3-numpy and
 python3-matplotlib (Agg backend: no display)."""
 import argparse
 import os
@@ -43,9 +44,12 @@ def vtu_file(path):
 
 def read_faces(path):
     """Triangles (or polygons) of the fracture faces with their opening and
-    slip in mm and the states, one value per cell (the patch constants)."""
+    slip in mm, the states and the fracture pressure in MPa (if written),
+    one value per cell (the patch constants)."""
     mesh = meshio.read(vtu_file(path))
     polygons, opening, slip, states, fracture = [], [], [], [], []
+    pressure_field = mesh.point_data.get("fracture_pressure")
+    pressure = []
     fracture_index = mesh.point_data["fracture"].reshape(-1)
     normal_jump = mesh.point_data["normal_jump"].reshape(-1)
     tangential_jump = mesh.point_data["tangential_jump"].reshape(-1, 3)
@@ -58,11 +62,13 @@ def read_faces(path):
             opening.append(-1e3 * normal_jump[first])
             slip.append(1e3 * np.linalg.norm(tangential_jump[first]))
             fracture.append(int(round(float(fracture_index[first]))))
+            if pressure_field is not None:
+                pressure.append(1e-6 * float(pressure_field[first]))
             if normal_state is not None:
                 states.append((int(round(float(normal_state[first]))),
                                int(round(float(tangential_state[first])))))
     return (np.array(polygons), np.array(opening), np.array(slip), states,
-            np.array(fracture))
+            np.array(fracture), np.array(pressure))
 
 
 STATE_NAMES = ("open", "stick", "slip")
@@ -135,9 +141,9 @@ def main():
     assert len(labels) == len(args.inputs), "one label per input"
     view = [float(a) for a in args.view.split(",")]
 
-    panels, openings, slips, categories = [], [], [], []
+    panels, openings, slips, categories, pressures = [], [], [], [], []
     for label, path in zip(labels, args.inputs):
-        polygons, opening, slip, states, fracture = read_faces(path)
+        polygons, opening, slip, states, fracture, pressure = read_faces(path)
         print(label)
         for f in [None] + sorted(set(fracture)):
             on = np.ones(len(fracture), dtype=bool) if f is None else \
@@ -148,11 +154,15 @@ def main():
             if states:
                 summary += "; open %d, stick %d, slip %d" % count_states(
                     [s for s, o in zip(states, on) if o])
+            if len(pressure):
+                summary += "; p_f %.3g to %.3g MPa" % (pressure[on].min(),
+                                                     pressure[on].max())
             print(summary)
         panels.append((label, polygons))
         openings.append(opening)
         slips.append(slip)
         categories.append(np.array([state_category(*s) for s in states]))
+        pressures.append(pressure)
     draw(args.prefix, "normal-jump", "opening $-[u]\\cdot n^+$ (mm)", panels,
          openings, view, args.dpi, "viridis")
     draw(args.prefix, "tangential-jump", "slip $|[u]_\\tau|$ (mm)", panels,
@@ -162,6 +172,9 @@ def main():
             ["tab:red", "tab:blue", "tab:orange"])
         draw(args.prefix, "states", "contact state", panels, categories,
              view, args.dpi, colors, STATE_NAMES)
+    if all(len(p) > 0 for p in pressures):
+        draw(args.prefix, "fracture-pressure", "fracture pressure $p_f$ (MPa)",
+             panels, pressures, view, args.dpi, "plasma")
 
 
 if __name__ == "__main__":

@@ -314,19 +314,21 @@ namespace PolyFrac
   FaceCondensation<dim>::make_reduced_operator(
     const std::vector<FaceLinearisation<dim>> &faces,
     const std::vector<LocalRows>              &rows,
-    TrilinosWrappers::SparseMatrix            &matrix) const
+    const std::vector<bool>                   &structure,
+    TrilinosWrappers::SparseMatrix            &matrix)
   {
     // Each intermediate matrix is freed as soon as the next one is built,
-    // which keeps at most two of them alive.
-    const types::global_dof_index n_u = dofs.n_displacement_dofs();
-    SparsityPattern               projected_pattern;
-    SparseMatrix<double>          projected(projected_pattern);
+    // which keeps at most two of them alive. Their patterns are rebuilt
+    // only when the row structure changes.
+    const types::global_dof_index n_u          = dofs.n_displacement_dofs();
+    const bool                    new_patterns = structure != product_structure;
+    SparseMatrix<double> projected(projected_pattern);
     {
-      SparsityPattern      product_pattern;
       SparseMatrix<double> product(product_pattern);
-      stiffness.mmult(product, elimination);
-      elimination.Tmmult(projected, product);
+      stiffness.mmult(product, elimination, Vector<double>(), new_patterns);
+      elimination.Tmmult(projected, product, Vector<double>(), new_patterns);
     }
+    product_structure = structure;
 
     // The reduced dofs: free node sides, bubble components and jump
     // variables; the others (fixed, prescribed jumps) get a unit row.
@@ -379,7 +381,6 @@ namespace PolyFrac
         diagonal_scale += std::abs(projected.el(row, row)) / n_u;
       }
     projected.clear();
-    projected_pattern.reinit(0, 0, 0);
     for (types::global_dof_index row = 0; row < n_u; ++row)
       if (!reduced_dof[row])
         reduced.set(row, row, diagonal_scale);
@@ -398,6 +399,26 @@ namespace PolyFrac
     for (const auto &[row, column, value] : coupling)
       reduced.add(row, column, value);
     matrix.reinit(reduced, 0.); // no (absolute) drop tolerance
+  }
+
+
+
+  template <int dim>
+  std::vector<bool>
+  FaceCondensation<dim>::row_structure(const std::vector<LocalRows> &rows)
+  {
+    std::vector<bool> structure;
+    for (const auto &face : rows)
+      {
+        structure.insert(structure.end(),
+                         face.kinematic.begin(),
+                         face.kinematic.end());
+        structure.insert(structure.end(),
+                         face.jump_variable.begin(),
+                         face.jump_variable.end());
+        structure.push_back(face.coupled);
+      }
+    return structure;
   }
 
 
@@ -423,7 +444,8 @@ namespace PolyFrac
     Vector<double> offset;
     make_elimination(faces, rows, offset);
     TrilinosWrappers::SparseMatrix matrix;
-    make_reduced_operator(faces, rows, matrix);
+    const std::vector<bool> structure = row_structure(rows);
+    make_reduced_operator(faces, rows, structure, matrix);
 
     // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
     // traction the open, free and slip rows prescribe.
@@ -464,18 +486,32 @@ namespace PolyFrac
     rhs *= -1.;
     rhs += coupling_rhs;
 
-    Vector<double> y(n_u);
-    KrylovSolve    krylov{"CG", 0, true};
-    if (symmetric)
-      krylov.iterations = solve_cg_amg(matrix, y, rhs, dofs, vertices, solver, enough);
-    else
+    // The AMG is built anew only when some face's rows change kind (a
+    // state change); between, the operator changes only through the slip
+    // directions, and the AMG of the last new structure (and the operator
+    // it was built on, which ML keeps using) preconditions it.
+    const bool new_amg = !amg || structure != amg_structure;
+    if (new_amg)
       {
-        krylov.method = "GMRES";
-        std::tie(krylov.iterations, krylov.converged) =
-          solve_gmres_amg(matrix, y, rhs, dofs, vertices, solver, enough);
-        if (!krylov.converged)
-          return krylov;
+        amg.reset();
+        amg_matrix =
+          std::make_unique<TrilinosWrappers::SparseMatrix>(std::move(matrix));
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        initialize_amg(*amg, *amg_matrix, dofs, vertices);
+        amg_structure = structure;
       }
+    Vector<double> y(n_u);
+    KrylovSolve    krylov{symmetric ? "CG" : "GMRES", 0, true};
+    std::tie(krylov.iterations, krylov.converged) =
+      solve_krylov(symmetric,
+                   new_amg ? *amg_matrix : matrix,
+                   y,
+                   rhs,
+                   *amg,
+                   solver,
+                   enough);
+    if (!krylov.converged)
+      return krylov;
 
     // du = Z y + z_0; the kinematic multipliers from the bubble rows
     // |σ| w_b dλ = −(R + A du)_b, then the traction ones dλ̃_T =

@@ -78,85 +78,72 @@ namespace PolyFrac
 
 
 
-    /**
-     * Initialises @p amg (ML smoothed aggregation) for @p matrix with the
-     * rigid-body modes of the node sides as near null space.
-     */
-    template <int dim>
-    void
-    initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
-                   const TrilinosWrappers::SparseMatrix &matrix,
-                   const DoFMap<dim>                    &dofs,
-                   const std::vector<Point<dim>>        &vertices)
-    {
-      // AdditionalData has no room for rotations in deal.II 9.4: let it fill
-      // the ML list (smoother, aggregation) with no constant modes, then
-      // set the null space by hand. ML reads the vectors during initialize(),
-      // so the multivector must outlive it.
-      //
-      // "PDE equations" = dim makes ML aggregate whole dim-blocks of rows
-      // (a node side or a bubble) instead of single rows. Without it, each
-      // scalar aggregate carries all 3 (2D) or 6 (3D) modes and the 3D coarse
-      // operator grows to several times the fine one, which costs more than
-      // the rotations save in iterations.
-      TrilinosWrappers::PreconditionAMG::AdditionalData data;
-      data.elliptic              = true;
-      data.higher_order_elements = false;
-      data.smoother_sweeps       = 2;
-      data.aggregation_threshold = 0.02;
-      Teuchos::ParameterList              parameters;
-      std::unique_ptr<Epetra_MultiVector> modes;
-      data.set_parameters(parameters, modes, matrix.trilinos_matrix());
-      modes = rigid_body_modes(dofs, vertices, matrix.trilinos_matrix());
-      parameters.set("null space: type", "pre-computed");
-      parameters.set("null space: dimension", modes->NumVectors());
-      parameters.set("null space: vectors", modes->Values());
-      parameters.set("PDE equations", static_cast<int>(dim));
-      amg.initialize(matrix, parameters);
-    }
-
-
-
-    /**
-     * Solves @p matrix @p x = @p rhs by CG (@p symmetric) or restarted
-     * GMRES, preconditioned with the AMG of initialize_amg(), to the
-     * tolerance `Linear solver/Tolerance` relative to |rhs| within
-     * `Linear solver/Maximum iterations`. GMRES is right-preconditioned, so
-     * that the tolerance bounds the residual of the system itself, like
-     * CG's. Returns the solver control and whether it converged.
-     */
-    template <int dim>
-    std::pair<SolverControl, bool>
-    solve_krylov_amg(const bool                            symmetric,
-                     const TrilinosWrappers::SparseMatrix &matrix,
-                     Vector<double>                       &x,
-                     const Vector<double>                 &rhs,
-                     const DoFMap<dim>                    &dofs,
-                     const std::vector<Point<dim>>        &vertices,
-                     const Parameters::SolverData         &solver,
-                     const double                          enough)
-    {
-      TrilinosWrappers::PreconditionAMG amg;
-      initialize_amg(amg, matrix, dofs, vertices);
-      SolverControl control(solver.max_iterations,
-                            std::max(solver.tolerance * rhs.l2_norm(), enough));
-      try
-        {
-          if (symmetric)
-            SolverCG<Vector<double>>(control).solve(matrix, x, rhs, amg);
-          else
-            SolverGMRES<Vector<double>>(
-              control,
-              SolverGMRES<Vector<double>>::AdditionalData(gmres_restart, true))
-              .solve(matrix, x, rhs, amg);
-        }
-      catch (const SolverControl::NoConvergence &)
-        {
-          return {control, false};
-        }
-      return {control, true};
-    }
   } // namespace
+
+
+
+  template <int dim>
+  void
+  initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
+                 const TrilinosWrappers::SparseMatrix &matrix,
+                 const DoFMap<dim>                    &dofs,
+                 const std::vector<Point<dim>>        &vertices)
+  {
+    // AdditionalData has no room for rotations in deal.II 9.4: let it fill
+    // the ML list (smoother, aggregation) with no constant modes, then
+    // set the null space by hand. ML reads the vectors during initialize(),
+    // so the multivector must outlive it.
+    //
+    // "PDE equations" = dim makes ML aggregate whole dim-blocks of rows
+    // (a node side or a bubble) instead of single rows. Without it, each
+    // scalar aggregate carries all 3 (2D) or 6 (3D) modes and the 3D coarse
+    // operator grows to several times the fine one, which costs more than
+    // the rotations save in iterations.
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = false;
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = 0.02;
+    Teuchos::ParameterList              parameters;
+    std::unique_ptr<Epetra_MultiVector> modes;
+    data.set_parameters(parameters, modes, matrix.trilinos_matrix());
+    modes = rigid_body_modes(dofs, vertices, matrix.trilinos_matrix());
+    parameters.set("null space: type", "pre-computed");
+    parameters.set("null space: dimension", modes->NumVectors());
+    parameters.set("null space: vectors", modes->Values());
+    parameters.set("PDE equations", static_cast<int>(dim));
+    amg.initialize(matrix, parameters);
+  }
+
+
+
+  std::pair<unsigned int, bool>
+  solve_krylov(const bool                               symmetric,
+               const TrilinosWrappers::SparseMatrix    &matrix,
+               Vector<double>                          &x,
+               const Vector<double>                    &rhs,
+               const TrilinosWrappers::PreconditionAMG &amg,
+               const Parameters::SolverData            &solver,
+               const double                             enough)
+  {
+    SolverControl control(solver.max_iterations,
+                          std::max(solver.tolerance * rhs.l2_norm(), enough));
+    try
+      {
+        if (symmetric)
+          SolverCG<Vector<double>>(control).solve(matrix, x, rhs, amg);
+        else
+          SolverGMRES<Vector<double>>(
+            control,
+            SolverGMRES<Vector<double>>::AdditionalData(gmres_restart, true))
+            .solve(matrix, x, rhs, amg);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        return {control.last_step(), false};
+      }
+    return {control.last_step(), true};
+  }
 
 
 
@@ -167,71 +154,45 @@ namespace PolyFrac
                const Vector<double>                 &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
-               const Parameters::SolverData         &solver,
-               const double                          enough)
+               const Parameters::SolverData         &solver)
   {
-    const auto [control, converged] =
-      solve_krylov_amg(true, matrix, x, rhs, dofs, vertices, solver, enough);
+    TrilinosWrappers::PreconditionAMG amg;
+    initialize_amg(amg, matrix, dofs, vertices);
+    const auto [iterations, converged] =
+      solve_krylov(true, matrix, x, rhs, amg, solver);
     AssertThrow(converged,
                 ExcMessage("The AMG-preconditioned CG solver did not "
                            "converge in " +
-                           std::to_string(control.last_step()) +
-                           " iterations (residual " +
-                           std::to_string(control.last_value()) +
-                           "). Raise Linear solver/Maximum iterations "
-                           "or use Method = direct."));
-    return control.last_step();
+                           std::to_string(iterations) +
+                           " iterations. Raise Linear solver/Maximum "
+                           "iterations or use Method = direct."));
+    return iterations;
   }
 
 
 
-  template <int dim>
-  std::pair<unsigned int, bool>
-  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                  Vector<double>                       &x,
-                  const Vector<double>                 &rhs,
-                  const DoFMap<dim>                    &dofs,
-                  const std::vector<Point<dim>>        &vertices,
-                  const Parameters::SolverData         &solver,
-                  const double                          enough)
-  {
-    const auto [control, converged] =
-      solve_krylov_amg(false, matrix, x, rhs, dofs, vertices, solver, enough);
-    return {control.last_step(), converged};
-  }
-
-
-
+  template void
+  initialize_amg(TrilinosWrappers::PreconditionAMG &,
+                 const TrilinosWrappers::SparseMatrix &,
+                 const DoFMap<2> &,
+                 const std::vector<Point<2>> &);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
                const Vector<double> &,
                const DoFMap<2> &,
                const std::vector<Point<2>> &,
-               const Parameters::SolverData &,
-               const double);
+               const Parameters::SolverData &);
+  template void
+  initialize_amg(TrilinosWrappers::PreconditionAMG &,
+                 const TrilinosWrappers::SparseMatrix &,
+                 const DoFMap<3> &,
+                 const std::vector<Point<3>> &);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
                const Vector<double> &,
                const DoFMap<3> &,
                const std::vector<Point<3>> &,
-               const Parameters::SolverData &,
-               const double);
-  template std::pair<unsigned int, bool>
-  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &,
-                  Vector<double> &,
-                  const Vector<double> &,
-                  const DoFMap<2> &,
-                  const std::vector<Point<2>> &,
-                  const Parameters::SolverData &,
-               const double);
-  template std::pair<unsigned int, bool>
-  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &,
-                  Vector<double> &,
-                  const Vector<double> &,
-                  const DoFMap<3> &,
-                  const std::vector<Point<3>> &,
-                  const Parameters::SolverData &,
-               const double);
+               const Parameters::SolverData &);
 } // namespace PolyFrac

@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -15,6 +16,7 @@
 #include <polyfrac/dofs/dof_map.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -95,8 +97,8 @@ namespace PolyFrac
       /** The number of iterations. */
       unsigned int iterations;
       /**
-       * Whether the solver reached `Linear solver/Tolerance`; only GMRES
-       * may stop short (CG throws), and the step is then invalid.
+       * Whether the solver reached `Linear solver/Tolerance`; if not, the
+       * step is invalid.
        */
       bool converged;
     };
@@ -190,12 +192,14 @@ namespace PolyFrac
 
     /**
      * @p matrix = Z^T A Z + Σ_σ |σ| E (on the jump variables) + the
-     * coupling of the Coulomb slip faces.
+     * coupling of the Coulomb slip faces; @p structure is row_structure()
+     * of @p rows.
      */
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
                           const std::vector<LocalRows>              &rows,
-                          TrilinosWrappers::SparseMatrix &matrix) const;
+                          const std::vector<bool>        &structure,
+                          TrilinosWrappers::SparseMatrix &matrix);
 
     const SparseMatrix<double>                      &stiffness;
     const DoFMap<dim>                               &dofs;
@@ -203,6 +207,28 @@ namespace PolyFrac
     const std::map<types::global_dof_index, double> &dirichlet;
     const std::vector<Point<dim>>                   &vertices;
     const Parameters::SolverData                    &solver;
+
+    /**
+     * The kinds of the local rows of every face (kinematic, jump variable,
+     * coupled): the structure of the reduced operator.
+     */
+    static std::vector<bool>
+    row_structure(const std::vector<LocalRows> &rows);
+
+    /**
+     * The AMG of the last reduced operator with a new row structure, that
+     * operator (ML keeps a reference to it) and its row structure.
+     */
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    std::vector<bool>                                  amg_structure;
+
+    /**
+     * The sparsity patterns of A Z and Z^T A Z, which depend on the row
+     * structure only (product_structure): reused while it stays.
+     */
+    SparsityPattern   product_pattern, projected_pattern;
+    std::vector<bool> product_structure;
 
     /** Dofs that are neither fixed nor bubbles. */
     std::vector<bool> free_nodal;

@@ -2,6 +2,7 @@
 #define polyfrac_physics_amg_solver_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -16,18 +17,43 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * Solves @p matrix @p x = @p rhs by CG preconditioned with Trilinos ML
-   * smoothed-aggregation AMG, given the rigid-body modes of the node sides
-   * as near null space. The rows of @p matrix are the displacement dofs of
-   * @p dofs (node sides, then bubbles); rows fixed by constraints stay in
-   * the matrix as decoupled diagonal rows. Returns the number of CG
+   * Initialises @p amg, Trilinos ML smoothed aggregation, for @p matrix,
+   * whose rows are the displacement dofs of @p dofs (node sides, then
+   * bubbles), with the rigid-body modes of the node sides as near null
+   * space.
+   */
+  template <int dim>
+  void
+  initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
+                 const TrilinosWrappers::SparseMatrix &matrix,
+                 const DoFMap<dim>                    &dofs,
+                 const std::vector<Point<dim>>        &vertices);
+
+  /**
+   * Solves @p matrix @p x = @p rhs by CG (@p symmetric) or restarted GMRES,
+   * right-preconditioned (so that the tolerance bounds the residual of the
+   * system itself, like CG's) with @p amg, which may have been built for
+   * another, nearby matrix. Stops at `Linear solver/Tolerance` relative to
+   * |rhs|, or at the residual @p enough if that is larger; returns the
+   * number of iterations and whether it got there within `Linear
+   * solver/Maximum iterations` (the caller decides what to do otherwise).
+   */
+  std::pair<unsigned int, bool>
+  solve_krylov(const bool                               symmetric,
+               const TrilinosWrappers::SparseMatrix    &matrix,
+               Vector<double>                          &x,
+               const Vector<double>                    &rhs,
+               const TrilinosWrappers::PreconditionAMG &amg,
+               const Parameters::SolverData            &solver,
+               const double                             enough = 0.);
+
+  /**
+   * Solves @p matrix @p x = @p rhs by CG preconditioned with the AMG of
+   * initialize_amg() (the elasticity system). Rows fixed by constraints
+   * stay in the matrix as decoupled diagonal rows. Returns the number of CG
    * iterations; throws an error that names the remedies when CG does not
-   * reach `Linear solver/Tolerance` (relative to |rhs|), or the residual
-   * @p enough if that is larger, within `Linear solver/Maximum
-   * iterations`.
-   *
-   * Used for the elasticity system and for the condensed Newton steps of
-   * contact mechanics (FaceCondensation).
+   * reach `Linear solver/Tolerance` (relative to |rhs|) within `Linear
+   * solver/Maximum iterations`.
    */
   template <int dim>
   unsigned int
@@ -36,27 +62,7 @@ namespace PolyFrac
                const Vector<double>                 &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
-               const Parameters::SolverData         &solver,
-               const double                          enough = 0.);
-
-  /**
-   * Solves the non-symmetric @p matrix @p x = @p rhs (the condensed Newton
-   * step of contact mechanics when a Coulomb face slips in contact) by
-   * restarted GMRES, right-preconditioned with the AMG of solve_cg_amg()
-   * built on @p matrix itself. Returns the number of iterations and
-   * whether GMRES reached `Linear solver/Tolerance` (relative to |rhs|),
-   * or the residual @p enough if that is larger, within `Linear solver/Maximum iterations`; the caller decides what
-   * to do otherwise.
-   */
-  template <int dim>
-  std::pair<unsigned int, bool>
-  solve_gmres_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                  Vector<double>                       &x,
-                  const Vector<double>                 &rhs,
-                  const DoFMap<dim>                    &dofs,
-                  const std::vector<Point<dim>>        &vertices,
-                  const Parameters::SolverData         &solver,
-                  const double                          enough = 0.);
+               const Parameters::SolverData         &solver);
 } // namespace PolyFrac
 
 #endif
