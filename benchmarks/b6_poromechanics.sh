@@ -24,6 +24,7 @@ if [ "${1:-}" = "--fine" ]; then
 fi
 program=${1:-$root/build/polyfrac}
 out=$root/output/b6-poromechanics-$label
+mkdir -p "$root/output"
 
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 /usr/bin/time -f "wall %e s, CPU %U s, peak memory %M KB" \
