@@ -627,10 +627,14 @@ main(int argc, char **argv)
  * few as with depth 5; depth 1 needs 19 and 10-11. Make the matrix
  * impermeable (`--set "Flow/Permeability=0"`): the fluid then has nowhere
  * to go but into the fracture, and the coupling is at its strongest; there
- * the contact solve of the first step fails, with a singular Jacobian
- * (presumably once the pressure has opened so much of the fracture that
- * the upper block is held by too few faces), also with the step halved:
- * a scene to study with this program. Refine the mesh (`--set
+ * the first step fails, also with the step halved. It is the flow solve
+ * that fails, not the contact (the model's message says "contact solve"):
+ * once every fracture face is in contact its relaxation a_σ is 0, the
+ * impermeable matrix exchanges nothing, and the fracture pressure of the
+ * fixed-stress flow step has no storage and no pressure boundary, so its
+ * matrix is singular. A small positive a_σ on the faces in contact would
+ * keep it regular; the library does not do this yet, and this program is
+ * a good place to try it. Refine the mesh (`--set
  * "Mesh/Subdivisions=24, 24"`): the fracture has more faces, the states more
  * ways to change, but in theory the fixed-stress rate does not depend on h.
  * Finally, the monolithic alternative: one Newton method for u, λ and p
