@@ -627,9 +627,9 @@ main(int argc, char **argv)
  * few as with depth 5; depth 1 needs 19 and 10-11. Make the matrix
  * impermeable (`--set "Flow/Permeability=0"`): the fluid then has nowhere
  * to go but into the fracture, and the coupling is at its strongest; there
- * the first step fails, also with the step halved. It is the flow solve
- * that fails, not the contact (the model's message says "contact solve"):
- * once every fracture face is in contact its relaxation a_σ is 0, the
+ * the first step fails, also with the step halved, and the message says
+ * why: it is the flow solve that fails, not the contact. Once every
+ * fracture face is in contact its relaxation a_σ is 0, the
  * impermeable matrix exchanges nothing, and the fracture pressure of the
  * fixed-stress flow step has no storage and no pressure boundary, so its
  * matrix is singular. A small positive a_σ on the faces in contact would

@@ -366,10 +366,10 @@ namespace PolyFrac
         std::ostringstream what;
         e.print_info(what);
         report.converged = false;
-        report.failure   = "the contact solve failed in fixed-stress "
-                           "iteration " +
+        report.failure   = "fixed-stress iteration " +
                          std::to_string(*report.coupling_iterations + 1) +
-                         ": " + what.str();
+                         " failed in its flow or contact solve: " +
+                         what.str();
         return report;
       }
     if (increment > prm.nonlinear.coupling_tolerance)

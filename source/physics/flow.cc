@@ -377,7 +377,20 @@ namespace PolyFrac
     if (prm.solver.method == "direct")
       {
         SparseDirectUMFPACK direct;
-        direct.initialize(matrix);
+        try
+          {
+            direct.initialize(matrix);
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "Flow: UMFPACK finds the pressure system singular: "
+                          "some pressures are determined by nothing, e.g. a "
+                          "fracture whose faces are all in contact (no "
+                          "storage) in an impermeable matrix (no exchange) "
+                          "without a pressure boundary."));
+          }
         direct.vmult(pressure, rhs);
       }
     else
