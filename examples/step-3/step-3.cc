@@ -18,9 +18,9 @@
  * library's poromechanics model solves. This program runs it on a small
  * scene, step by step, and looks at the iteration that couples the two
  * physics: why it is needed, how its relaxation must follow the contact
- * states, and how a few lines of Anderson acceleration halve its cost. The discrete energy balance
- * of each step serves as the check that the coupled equations are
- * consistent.
+ * states, and how a few lines of Anderson acceleration halve its cost. The
+ * discrete energy balance of each step serves as the check that the coupled
+ * equations are consistent.
  *
  * The notation is that of step-2 and of doc/scheme.md §1: the fracture Γ
  * has two sides ±, n^+ is the unit normal out of the + side, [u] = u^+ −
@@ -142,13 +142,14 @@
  * where γ minimises |f_k − Σ_j γ_j (f_{j+1} − f_j)|: the combination of
  * the last steps whose linearised residual is smallest. For a linear map it
  * is a Krylov method, equivalent to GMRES; a few slowly decaying
- * directions are found in a few iterations and removed. Its cost is negligible (a least-squares problem
- * with m columns per iteration), it needs no derivative of G, and with
- * m = 0 it is the plain iteration. The class AndersonAcceleration does
- * this; PoromechanicsModel applies it to the pressures, with m = Nonlinear
- * solver/Anderson depth. One caveat: when a face changes its normal state,
- * its a_σ changes and with it the map G, and the stored steps belong to the
- * old map; the model then clears the history and starts afresh.
+ * directions are found in a few iterations and removed. Its cost is negligible
+ * (a least-squares problem with m columns per iteration), it needs no
+ * derivative of G, and with m = 0 it is the plain iteration. The class
+ * AndersonAcceleration does this; PoromechanicsModel applies it to the
+ * pressures, with m = Nonlinear solver/Anderson depth. One caveat: when a face
+ * changes its normal state, its a_σ changes and with it the map G, and the
+ * stored steps belong to the old map; the model then clears the history and
+ * starts afresh.
  *
  * The iteration stops when max|Δu|/max|u| + max|Δp|/max|p| is at most the
  * coupling tolerance, 1e-8 here, and the step fails if it has not after
@@ -321,9 +322,8 @@ namespace Step3
         }
     out << std::fixed << std::setprecision(3)
         << "Mean factor per iteration from iteration 2 on: m=0 "
-        << mean_contraction(p) << ", m=" << depth << " "
-        << mean_contraction(a) << std::defaultfloat << std::setprecision(6)
-        << std::endl;
+        << mean_contraction(p) << ", m=" << depth << " " << mean_contraction(a)
+        << std::defaultfloat << std::setprecision(6) << std::endl;
   }
 
 
@@ -475,7 +475,10 @@ namespace Step3
     // and the checks. The tables come first, so that a failing check can be
     // understood from them.
     if (anderson[0].converged && plain[0].converged)
-      print_first_step(plain[0], anderson[0], prm.nonlinear.anderson_depth, out);
+      print_first_step(plain[0],
+                       anderson[0],
+                       prm.nonlinear.anderson_depth,
+                       out);
     out << "Time loop, m = " << prm.nonlinear.anderson_depth
         << " and m = 0 (at most " << prm.nonlinear.max_coupling_iterations
         << " iterations):" << std::endl;

@@ -261,17 +261,16 @@ namespace PolyFrac
     const std::vector<double> pf_0 = flow.fracture_pressures(p_start);
     for (unsigned int i = 0; i < d_k.size(); ++i)
       {
-        data.apertures[i]        = d_k[i];
+        data.apertures[i] = d_k[i];
         // A face in contact keeps its normal jump whatever p_f is: its
         // relaxation is 0, an open face's the probed compliance.
-        const double a = u_k.contact.normal.empty() ||
+        const double a           = u_k.contact.normal.empty() ||
                              u_k.contact.normal[i] == NormalState::open ?
-                           fracture_relaxation[i] :
-                           0.;
+                                     fracture_relaxation[i] :
+                                     0.;
         data.fracture_storage[i] = a;
         data.fracture_rhs[i] =
-          (a * (pf_k[i] - pf_0[i]) - (d_k[i] - d_0[i])) /
-          time_step;
+          (a * (pf_k[i] - pf_0[i]) - (d_k[i] - d_0[i])) / time_step;
       }
     return data;
   }
@@ -320,13 +319,13 @@ namespace PolyFrac
       }
 
     StepReport report;
-    report.coupling_iterations     = 0;
-    report.newton_iterations       = 0;
-    MechanicalState<dim> u_k       = state;
-    Vector<double>       p_k       = pressure;
-    double               increment = 0;
-    FlowStepData         data;
-    AndersonAcceleration anderson(prm.nonlinear.anderson_depth);
+    report.coupling_iterations         = 0;
+    report.newton_iterations           = 0;
+    MechanicalState<dim>     u_k       = state;
+    Vector<double>           p_k       = pressure;
+    double                   increment = 0;
+    FlowStepData             data;
+    AndersonAcceleration     anderson(prm.nonlinear.anderson_depth);
     std::vector<NormalState> previous_normal;
     // The mobility of the pressure increment depends on Δt only.
     const std::vector<double> stabilisation = increment_mobility(time_step);
@@ -345,7 +344,7 @@ namespace PolyFrac
             // then of another map.
             if (u_k.contact.normal != previous_normal)
               anderson.clear();
-            previous_normal = u_k.contact.normal;
+            previous_normal             = u_k.contact.normal;
             const Vector<double> p_next = anderson.next(p_k, image);
             MechanicalState<dim> u_next;
             *report.newton_iterations +=
@@ -368,8 +367,7 @@ namespace PolyFrac
         report.converged = false;
         report.failure   = "fixed-stress iteration " +
                          std::to_string(*report.coupling_iterations + 1) +
-                         " failed in its flow or contact solve: " +
-                         what.str();
+                         " failed in its flow or contact solve: " + what.str();
         return report;
       }
     if (increment > prm.nonlinear.coupling_tolerance)

@@ -303,8 +303,8 @@ namespace PolyFrac
     for (unsigned int i = 0; i < n_faces; ++i)
       for (unsigned int d = 0; d < dim; ++d)
         momentum(dofs.multiplier_dof(i, d)) = 0;
-    R.momentum_scale = load * load_norm > 0 ? load * load_norm : 1.;
-    R.momentum       = momentum.l2_norm() / R.momentum_scale;
+    R.momentum_scale  = load * load_norm > 0 ? load * load_norm : 1.;
+    R.momentum        = momentum.l2_norm() / R.momentum_scale;
     R.complementarity = stress_scale > 0 ?
                           std::sqrt(complementarity / measure) / stress_scale :
                           std::sqrt(complementarity);
@@ -322,11 +322,11 @@ namespace PolyFrac
     std::string report;
     if (condensation && FaceCondensation<dim>::condensable(R.faces))
       {
-        const auto krylov = condensation->solve(
-          R.faces,
-          R.vector,
-          0.1 * prm.nonlinear.tolerance * R.momentum_scale,
-          step);
+        const auto krylov =
+          condensation->solve(R.faces,
+                              R.vector,
+                              0.1 * prm.nonlinear.tolerance * R.momentum_scale,
+                              step);
         if (krylov.converged)
           return "condensed step: " + std::to_string(krylov.iterations) + " " +
                  krylov.method + " iterations";

@@ -322,7 +322,7 @@ namespace PolyFrac
     // only when the row structure changes.
     const types::global_dof_index n_u          = dofs.n_displacement_dofs();
     const bool                    new_patterns = structure != product_structure;
-    SparseMatrix<double> projected(projected_pattern);
+    SparseMatrix<double>          projected(projected_pattern);
     {
       SparseMatrix<double> product(product_pattern);
       stiffness.mmult(product, elimination, Vector<double>(), new_patterns);
@@ -444,7 +444,7 @@ namespace PolyFrac
     Vector<double> offset;
     make_elimination(faces, rows, offset);
     TrilinosWrappers::SparseMatrix matrix;
-    const std::vector<bool> structure = row_structure(rows);
+    const std::vector<bool>        structure = row_structure(rows);
     make_reduced_operator(faces, rows, structure, matrix);
 
     // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
@@ -502,14 +502,8 @@ namespace PolyFrac
       }
     Vector<double> y(n_u);
     KrylovSolve    krylov{symmetric ? "CG" : "GMRES", 0, true};
-    std::tie(krylov.iterations, krylov.converged) =
-      solve_krylov(symmetric,
-                   new_amg ? *amg_matrix : matrix,
-                   y,
-                   rhs,
-                   *amg,
-                   solver,
-                   enough);
+    std::tie(krylov.iterations, krylov.converged) = solve_krylov(
+      symmetric, new_amg ? *amg_matrix : matrix, y, rhs, *amg, solver, enough);
     if (!krylov.converged)
       return krylov;
 

@@ -148,7 +148,7 @@ check(const unsigned int subdivisions, const unsigned int n_states)
   FaceCondensation<dim> condensation(
     stiffness, dofs, jumps, dirichlet, geometry.mesh.vertices, prm.solver);
   const bool condensable = FaceCondensation<dim>::condensable(faces);
-  const auto krylov      = condensation.solve(faces, residual, 0., condensed_step);
+  const auto krylov = condensation.solve(faces, residual, 0., condensed_step);
 
   double u_error = 0, u_norm = 0, lambda_error = 0, lambda_norm = 0;
   for (types::global_dof_index k = 0; k < residual.size(); ++k)

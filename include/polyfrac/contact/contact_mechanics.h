@@ -176,8 +176,8 @@ namespace PolyFrac
      */
     struct Residual
     {
-      Vector<double>                      vector;
-      double                              momentum, complementarity;
+      Vector<double> vector;
+      double         momentum, complementarity;
       /** The norm that `momentum` is relative to (the load's). */
       double                              momentum_scale;
       std::vector<NormalState>            normal;

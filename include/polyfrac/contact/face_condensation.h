@@ -198,8 +198,8 @@ namespace PolyFrac
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
                           const std::vector<LocalRows>              &rows,
-                          const std::vector<bool>        &structure,
-                          TrilinosWrappers::SparseMatrix &matrix);
+                          const std::vector<bool>                   &structure,
+                          TrilinosWrappers::SparseMatrix            &matrix);
 
     const SparseMatrix<double>                      &stiffness;
     const DoFMap<dim>                               &dofs;
