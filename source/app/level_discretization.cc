@@ -127,7 +127,11 @@ namespace PolyFrac
 
     geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
     network  = make_network(*geometry);
-    dofs     = std::make_unique<DoFMap<dim>>(*mesh, *network);
+    dofs     = std::make_unique<DoFMap<dim>>(*mesh,
+                                         *network,
+                                         prm.contact.split_bubbles ?
+                                               BubblePlacement::split :
+                                               BubblePlacement::plus_side);
   }
 
 

@@ -187,9 +187,6 @@ namespace PolyFrac
     {
       if (prm.mesh.local_refinements == 0)
         return;
-      AssertThrow(tria.all_reference_cells_are_hyper_cube(),
-                  ExcMessage("Mesh/Local refinements needs a hypercube mesh: "
-                             "deal.II 9.4 cannot refine simplices locally."));
       for (unsigned int r = 0; r < prm.mesh.local_refinements; ++r)
         {
           for (const auto &cell : tria.active_cell_iterators())

@@ -569,6 +569,18 @@ namespace PolyFrac
                       Patterns::Bool(),
                       "false: no bubble unknowns (they are fixed to zero), for "
                       "the stability study.");
+    prm.declare_entry(
+      "Bubble placement",
+      "plus side",
+      Patterns::Selection("plus side|split"),
+      "plus side: the bubble of each fracture face enters the trace of its "
+      "+ cell (the paper's scheme), so that lambda balances the traction "
+      "of that cell alone. split: half of it enters the + cell's trace and "
+      "minus half the - cell's; the jump is the same, but lambda balances "
+      "the mean traction of both sides, where the stress that is odd "
+      "across the fracture cancels: near a shear crack's tip, the + side "
+      "alone makes lambda_n oscillate and the tip face open "
+      "(benchmarks/B1.md, 'The tip').");
     prm.declare_entry("Complementarity parameter",
                       "auto",
                       Patterns::Anything(),
@@ -1075,6 +1087,7 @@ namespace PolyFrac
                            prm->get("Friction coefficient") + "."));
     contact.tresca_threshold = prm->get("Tresca threshold");
     contact.bubbles          = prm->get_bool("Bubbles");
+    contact.split_bubbles    = prm->get("Bubble placement") == "split";
     {
       const std::string beta =
         Utilities::trim(prm->get("Complementarity parameter"));

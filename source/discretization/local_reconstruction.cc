@@ -17,13 +17,15 @@ namespace PolyFrac
   {
     for (const unsigned int v : geometry.mesh.cells[cell].vertices)
       node_points.push_back(geometry.mesh.vertices[v]);
-    // The + cell's outward normal on σ is n^+, so N_{Kσ} = |σ| n^+.
+    // The bubble adds w v_σ to the cell's trace on σ (w: the bubble's
+    // trace weight), hence w v_σ ⊗ N_{Kσ}/|K| to ∇^K.
     for (const unsigned int i : dofs.cell_bubbles(cell))
       {
         const unsigned int f = network.fracture_faces[i].face;
-        gradient_coefficients.push_back(geometry.mesh.orientation(cell, f) *
-                                        geometry.faces[f].vector_area /
-                                        measure);
+        bubble_weights.push_back(dofs.bubble_trace_weight(cell, i));
+        gradient_coefficients.push_back(
+          bubble_weights.back() * geometry.mesh.orientation(cell, f) *
+          geometry.faces[f].vector_area / measure);
         value_weights.push_back(0.);
       }
   }
@@ -68,7 +70,7 @@ namespace PolyFrac
     FullMatrix<double> S(n_local(), n_local());
     D.Tmmult(S, D);
     for (unsigned int t = n_nodes; t < n_local(); ++t)
-      S(t, t) += 1.;
+      S(t, t) += bubble_weights[t - n_nodes] * bubble_weights[t - n_nodes];
     S *= std::pow(diameter, dim - 2.);
     return S;
   }

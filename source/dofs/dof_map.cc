@@ -8,16 +8,24 @@ namespace PolyFrac
 {
   template <int dim>
   DoFMap<dim>::DoFMap(const PolytopalMesh<dim>   &mesh,
-                      const FractureNetwork<dim> &network)
+                      const FractureNetwork<dim> &network,
+                      const BubblePlacement       placement)
     : n_fracture_faces(network.n_fracture_faces())
+    , placement(placement)
     , cell_node_sides(mesh.n_cells())
     , bubbles_of_cell(mesh.n_cells())
   {
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       cell_node_sides[c].assign(mesh.cells[c].vertices.size(),
                                 numbers::invalid_unsigned_int);
+    for (const auto &ff : network.fracture_faces)
+      plus_cells.push_back(ff.plus_cell);
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      bubbles_of_cell[network.fracture_faces[i].plus_cell].push_back(i);
+      {
+        bubbles_of_cell[network.fracture_faces[i].plus_cell].push_back(i);
+        if (placement == BubblePlacement::split)
+          bubbles_of_cell[network.fracture_faces[i].minus_cell].push_back(i);
+      }
 
     const auto vertex_cells = mesh.vertex_to_cells();
     const auto vertex_faces = mesh.vertex_to_faces();
@@ -75,6 +83,19 @@ namespace PolyFrac
       for (unsigned int d = 0; d < dim; ++d)
         dofs.push_back(bubble_dof(b, d));
     return dofs;
+  }
+
+
+
+  template <int dim>
+  double
+  DoFMap<dim>::bubble_trace_weight(const unsigned int c,
+                                   const unsigned int i) const
+  {
+    const bool plus = (c == plus_cells[i]);
+    if (placement == BubblePlacement::split)
+      return plus ? 0.5 : -0.5;
+    return plus ? 1. : 0.;
   }
 
 

@@ -3,8 +3,10 @@
 #include <polyfrac/mesh/mesh_geometry.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
 
 namespace PolyFrac
 {
@@ -38,6 +40,29 @@ namespace PolyFrac
         for (unsigned int j = i + 1; j < list.size(); ++j)
           h = std::max(h, vertices[list[i]].distance(vertices[list[j]]));
       return h;
+    }
+
+    /**
+     * Throws unless polytope @p c of measure |K| and diameter h_K is a
+     * proper cell: |K| > 1e-10 h_K^d. A cell below it is inverted or
+     * degenerate (gmsh can emit triangles whose three vertices lie on an
+     * embedded fracture curve), and its reconstructions would be garbage.
+     */
+    template <int dim>
+    void
+    check_cell_measure(const unsigned int c, const CellGeometry<dim> &geo)
+    {
+      if (geo.measure > 1e-10 * std::pow(geo.diameter, dim))
+        return;
+      std::ostringstream where;
+      where << "Cell " << c << " (vertex average " << geo.vertex_average
+            << ", diameter " << geo.diameter << ") has measure " << geo.measure
+            << ": it is " << (geo.measure < 0 ? "inverted" : "degenerate")
+            << ". On a distorted mesh, reduce Mesh/Distortion; in a gmsh "
+               "mesh, the element is flat (e.g. all its vertices on an "
+               "embedded fracture near a tip): coarsen or smooth the mesh "
+               "sizes there.";
+      AssertThrow(false, ExcMessage(where.str()));
     }
   } // namespace
 
@@ -162,10 +187,7 @@ namespace PolyFrac
                   geo.weights[s] += volume / (dim + 1.) / n_K;
               }
           }
-        AssertThrow(geo.measure > 0,
-                    ExcMessage("Cell " + std::to_string(c) +
-                               " has a non-positive measure: the mesh is "
-                               "inverted (reduce Mesh/Distortion)."));
+        check_cell_measure(c, geo);
         geo.centroid = Point<dim>();
         for (unsigned int s = 0; s < n_K; ++s)
           {

@@ -319,6 +319,19 @@ CASES = {
                        "Physical Curve(1) = {1, 2, 3, 4};\n"
                        "Physical Surface(100) = {1};\n"},
         stage="level"),
+    "degenerate_gmsh_cell": case(
+        "a gmsh mesh with a flat triangle (its vertices on one line)",
+        ["Cell 0 (vertex average 0.5 0, diameter 1) has measure 0: it is "
+         "degenerate", "in a gmsh mesh, the element is flat"],
+        files={"scene.prm": section("Mesh", Source="gmsh",
+                                    File_name="flat.msh"),
+               "flat.msh": "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                           "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n"
+                           "4 0 1 0\n5 0.5 0 0\n$EndNodes\n"
+                           "$Elements\n3\n1 2 2 100 1 1 5 2\n"
+                           "2 2 2 100 1 1 2 3\n3 2 2 100 1 1 3 4\n"
+                           "$EndElements\n"},
+        stage="level"),
     "analytic_solution_and_displacement": case(
         "`Analytic solution = terzaghi` and an exact Displacement",
         ["it gives the exact displacement: leave Exact solution/Displacement "

@@ -170,6 +170,10 @@ check_all()
   });
   check<dim>("local refinement (hanging nodes)",
              [](Parameters &p) { p.mesh.local_refinements = 1; });
+  check<dim>("local refinement, simplices", [](Parameters &p) {
+    p.mesh.cell_type         = "simplex";
+    p.mesh.local_refinements = 2;
+  });
   check<dim>("local refinement, distorted", [](Parameters &p) {
     p.mesh.local_refinements = 2;
     p.mesh.distortion        = 0.25;

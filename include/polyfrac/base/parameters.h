@@ -224,6 +224,9 @@ namespace PolyFrac
       std::string tresca_threshold;
       /** Bubbles: whether the fracture faces carry bubbles. */
       bool bubbles;
+      /** Bubble placement = split: half of each bubble on either side
+       * (BubblePlacement::split); plus side otherwise. */
+      bool split_bubbles;
       /** β > 0, or 0 for auto: (2μ + λ)/h_σ per fracture face. */
       double beta;
       /** Number of load steps N: step k scales the loads by k/N. */

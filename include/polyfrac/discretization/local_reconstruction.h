@@ -19,15 +19,16 @@ namespace PolyFrac
   /**
    * The reconstruction operators of one polytope K (doc/scheme.md §4), as
    * coefficients acting on its local vector unknowns t = node sides of K
-   * (in the order of the cell's vertices) followed by the bubbles of its
-   * + fracture faces:
+   * (in the order of the cell's vertices) followed by the bubbles that
+   * enter its traces (DoFMap::cell_bubbles()), the bubble of σ with trace
+   * weight w_σ (1 on the + side of the paper's scheme; ±1/2 when split):
    *
    * - cell gradient ∇^K v = Σ_t v_t ⊗ G_t, where G_t = g_s for a node and
-   *   G_t = N_{Kσ}/|K| for the bubble of σ;
+   *   G_t = w_σ N_{Kσ}/|K| for the bubble of σ;
    * - potential Π^K v(x) = Σ_t v_t (ω_t + G_t·(x − x̄_K)), with ω_t = ω_s^K
    *   for a node and 0 for a bubble;
    * - stabilisation S_K(u, v) = h_K^{d-2} Σ_s (u_s − Π^K u(x_s))·(v_s −
-   *   Π^K v(x_s)) + h_K^{d-2} Σ_σ u_{Kσ}·v_{Kσ}, which acts on each
+   *   Π^K v(x_s)) + h_K^{d-2} Σ_σ w_σ² u_σ·v_σ, which acts on each
    *   component alike: stabilisation() returns its scalar matrix.
    *
    * All three are exact on affine fields (tests/discretization).
@@ -75,6 +76,8 @@ namespace PolyFrac
     std::vector<Tensor<1, dim>> gradient_coefficients;
     /** ω_t, per local unknown (0 for a bubble). */
     std::vector<double> value_weights;
+    /** w_σ, per local bubble (DoFMap::bubble_trace_weight()). */
+    std::vector<double> bubble_weights;
     /** x̄_K. */
     Point<dim> centroid;
     /** |K|. */

@@ -22,7 +22,8 @@ namespace PolyFrac
    *   non-fracture faces; each class is one node side. A vertex off Γ has
    *   one, a vertex inside one fracture two, a tip one, an L/T/X
    *   intersection 2/3/4;
-   * - one vector bubble per fracture face, owned by its + cell;
+   * - one vector bubble per fracture face: on its + side (the paper's
+   *   placement), or split between both sides (see BubblePlacement);
    * - one vector multiplier per fracture face (after all displacement
    *   unknowns).
    *
@@ -34,6 +35,25 @@ namespace PolyFrac
    *   const auto local = dofs.cell_dofs(c); // node sides, then bubbles
    * @endcode
    */
+  /**
+   * Where the bubble v_σ of a fracture face σ enters the cell traces: the
+   * coefficient of v_σ in the trace of the + cell K and of the − cell L on
+   * σ. Either way [[v]]_σ = v̄_{Kσ} − v̄_{Lσ} + v_σ.
+   *
+   * - plus_side: K's trace is v̄_{Kσ} + v_σ, L's is v̄_{Lσ} (the paper's
+   *   scheme, doc/scheme.md §4). Its bubble equation ties λ_σ to the
+   *   traction of the + cell alone.
+   * - split: K's trace is v̄_{Kσ} + v_σ/2, L's is v̄_{Lσ} − v_σ/2. λ_σ then
+   *   balances the mean traction of K and L, in which the part of the
+   *   stress that is odd across the fracture (a shear crack tip's
+   *   singular normal stress) cancels (benchmarks/B1.md, "The tip").
+   */
+  enum class BubblePlacement
+  {
+    plus_side,
+    split
+  };
+
   template <int dim>
   class DoFMap
   {
@@ -49,8 +69,11 @@ namespace PolyFrac
     };
 
     /** Numbers the node sides of @p mesh cut by @p network, then the
-     * bubbles (one per fracture face of @p network). */
-    DoFMap(const PolytopalMesh<dim> &mesh, const FractureNetwork<dim> &network);
+     * bubbles (one per fracture face of @p network), placed as @p placement
+     * says. */
+    DoFMap(const PolytopalMesh<dim>   &mesh,
+           const FractureNetwork<dim> &network,
+           const BubblePlacement       placement = BubblePlacement::plus_side);
 
     /** Number of node sides. */
     unsigned int
@@ -103,12 +126,19 @@ namespace PolyFrac
       return cell_node_sides[c][i];
     }
 
-    /** The fracture faces whose bubble cell @p c carries (its + faces). */
+    /** The fracture faces whose bubble enters the trace of cell @p c: its
+     * + faces, and with BubblePlacement::split its − faces too. */
     const std::vector<unsigned int> &
     cell_bubbles(const unsigned int c) const
     {
       return bubbles_of_cell[c];
     }
+
+    /** The coefficient of the bubble of fracture face @p i in the trace of
+     * cell @p c on that face, which is one of the face's cells (see
+     * BubblePlacement): 1 or 0 (plus_side), 1/2 or −1/2 (split). */
+    double
+    bubble_trace_weight(const unsigned int c, const unsigned int i) const;
 
     /** Dofs of cell @p c: its node sides, then its bubbles, dim each. */
     std::vector<types::global_dof_index>
@@ -131,7 +161,10 @@ namespace PolyFrac
     std::vector<NodeSide> node_sides;
 
   private:
-    unsigned int                           n_fracture_faces;
+    unsigned int    n_fracture_faces;
+    BubblePlacement placement;
+    /** The + cell of each fracture face. */
+    std::vector<unsigned int>              plus_cells;
     std::vector<std::vector<unsigned int>> cell_node_sides;
     std::vector<std::vector<unsigned int>> bubbles_of_cell;
   };
