@@ -3,6 +3,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <polyfrac/base/cell_loop.h>
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/elasticity.h>
@@ -299,15 +300,25 @@ namespace PolyFrac
                                   MatrixType     &system_matrix,
                                   Vector<double> &system_rhs) const
   {
-    for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
-      {
+    /** One cell's stiffness, load and dofs. */
+    struct CellSystem
+    {
+      FullMatrix<double>                   stiffness;
+      Vector<double>                       load;
+      std::vector<types::global_dof_index> dofs;
+    };
+    cell_loop<CellSystem>(
+      geometry.mesh.n_cells(),
+      [this](const unsigned int cell, CellSystem &copy) {
         const LocalReconstruction<dim> local(geometry, dofs, network, cell);
-        c.distribute_local_to_global(local_stiffness(local),
-                                     cell_load(local, cell),
-                                     dofs.cell_dofs(cell),
-                                     system_matrix,
-                                     system_rhs);
-      }
+        copy.stiffness = local_stiffness(local);
+        copy.load      = cell_load(local, cell);
+        copy.dofs      = dofs.cell_dofs(cell);
+      },
+      [&](const CellSystem &copy) {
+        c.distribute_local_to_global(
+          copy.stiffness, copy.load, copy.dofs, system_matrix, system_rhs);
+      });
   }
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/bounding_box.h>
 
+#include <polyfrac/base/cell_loop.h>
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/postprocessing/analytic_solutions.h>
@@ -150,14 +151,18 @@ namespace PolyFrac
     if (const auto exact =
           exact_field<dim>(prm, false, prm.exact.displacement, time))
       {
-        double                      e_u = 0, n_u = 0, e_grad = 0, n_grad = 0;
-        Vector<double>              u(dim);
-        std::vector<Tensor<1, dim>> grad_u(dim);
-        for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
-          {
+        // Per cell: ∫|u − Π^K u_h|², ∫|u|², ∫|∇u − ∇^K u_h|², ∫|∇u|².
+        using Sums = std::array<double, 4>;
+        Sums total{};
+        cell_loop<Sums>(
+          geometry.mesh.n_cells(),
+          [&](const unsigned int c, Sums &sums) {
             const LocalReconstruction<dim> local(geometry, dofs, network, c);
             const auto                     values = state.local_values(dofs, c);
             const Tensor<2, dim>           grad_h = local.gradient(values);
+            Vector<double>                 u(dim);
+            std::vector<Tensor<1, dim>>    grad_u(dim);
+            sums.fill(0.);
             for (const auto &q : geometry.quadrature(c))
               {
                 exact->vector_value(q.point, u);
@@ -165,15 +170,19 @@ namespace PolyFrac
                 const Tensor<1, dim> u_h = local.potential(values, q.point);
                 for (unsigned int i = 0; i < dim; ++i)
                   {
-                    e_u += q.weight * std::pow(u(i) - u_h[i], 2);
-                    n_u += q.weight * u(i) * u(i);
-                    e_grad += q.weight * (grad_u[i] - grad_h[i]).norm_square();
-                    n_grad += q.weight * grad_u[i].norm_square();
+                    sums[0] += q.weight * std::pow(u(i) - u_h[i], 2);
+                    sums[1] += q.weight * u(i) * u(i);
+                    sums[2] += q.weight * (grad_u[i] - grad_h[i]).norm_square();
+                    sums[3] += q.weight * grad_u[i].norm_square();
                   }
               }
-          }
-        errors.u      = ratio(e_u, n_u);
-        errors.grad_u = ratio(e_grad, n_grad);
+          },
+          [&total](const Sums &sums) {
+            for (unsigned int k = 0; k < 4; ++k)
+              total[k] += sums[k];
+          });
+        errors.u      = ratio(total[0], total[1]);
+        errors.grad_u = ratio(total[2], total[3]);
       }
     if (!prm.exact.displacement_jump.empty())
       {

@@ -15,6 +15,25 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
+   * Where the bubble v_σ of a fracture face σ enters the cell traces: the
+   * coefficient of v_σ in the trace of the + cell K and of the − cell L on
+   * σ. Either way [[v]]_σ = v̄_{Kσ} − v̄_{Lσ} + v_σ.
+   *
+   * - plus_side: K's trace is v̄_{Kσ} + v_σ, L's is v̄_{Lσ} (the paper's
+   *   scheme, doc/scheme.md §4). Its bubble equation ties λ_σ to the
+   *   traction of the + cell alone.
+   * - split: K's trace is v̄_{Kσ} + v_σ/2, L's is v̄_{Lσ} − v_σ/2. λ_σ then
+   *   balances the mean traction of K and L, in which the part of the
+   *   stress that is odd across the fracture (a shear crack tip's
+   *   singular normal stress) cancels (benchmarks/B1.md, "The tip").
+   */
+  enum class BubblePlacement
+  {
+    plus_side,
+    split
+  };
+
+  /**
    * FE-less numbering of the unknowns of the bubble-VEM scheme
    * (doc/scheme.md §3):
    * - one vector unknown per *node side*: around each vertex s, the cells
@@ -35,25 +54,6 @@ namespace PolyFrac
    *   const auto local = dofs.cell_dofs(c); // node sides, then bubbles
    * @endcode
    */
-  /**
-   * Where the bubble v_σ of a fracture face σ enters the cell traces: the
-   * coefficient of v_σ in the trace of the + cell K and of the − cell L on
-   * σ. Either way [[v]]_σ = v̄_{Kσ} − v̄_{Lσ} + v_σ.
-   *
-   * - plus_side: K's trace is v̄_{Kσ} + v_σ, L's is v̄_{Lσ} (the paper's
-   *   scheme, doc/scheme.md §4). Its bubble equation ties λ_σ to the
-   *   traction of the + cell alone.
-   * - split: K's trace is v̄_{Kσ} + v_σ/2, L's is v̄_{Lσ} − v_σ/2. λ_σ then
-   *   balances the mean traction of K and L, in which the part of the
-   *   stress that is odd across the fracture (a shear crack tip's
-   *   singular normal stress) cancels (benchmarks/B1.md, "The tip").
-   */
-  enum class BubblePlacement
-  {
-    plus_side,
-    split
-  };
-
   template <int dim>
   class DoFMap
   {
