@@ -36,33 +36,45 @@ def read(directory, level):
     return {key: value[order] for key, value in data.items()}
 
 
-def report(run, name):
+def errors(run):
+    """The L2 errors of one run (fractions): slip over the whole crack,
+    lambda_n over the whole crack and over |xi| < 0.9 l and 0.8 l; lambda_n
+    on the two tip faces, its largest relative deviation on the others, and
+    the number of open faces."""
     xi, length = run["xi"], run["length"]
     slip_exact = slip_scale * np.sqrt(np.maximum(ell**2 - xi**2, 0))
+    constant = np.full_like(xi, lambda_n_exact)
 
     def l2(error, exact, mask):
         return np.sqrt(np.sum(length[mask] * error[mask] ** 2) /
                        np.sum(length[mask] * exact[mask] ** 2))
 
     everywhere = np.ones_like(xi, dtype=bool)
+    result = dict(slip=l2(run["slip"] - slip_exact, slip_exact, everywhere))
+    for key, bound in (("lambda_n", None), ("lambda_n_09", 0.9),
+                       ("lambda_n_08", 0.8)):
+        mask = everywhere if bound is None else np.abs(xi) < bound * ell
+        result[key] = l2(run["lambda_n"] - constant, constant, mask)
+    result["tips"] = (run["lambda_n"][0], run["lambda_n"][-1])
+    result["inner_deviation"] = np.abs(run["lambda_n"][1:-1] / lambda_n_exact - 1).max()
+    result["open"] = int(np.count_nonzero(run["state"] == 0))
+    return result
+
+
+def report(run, name):
+    e = errors(run)
     print("B1 %s: %d crack faces, %.4g to %.4g m" %
-          (name, len(xi), length.min(), length.max()))
-    print("  slip L2 error, whole crack:        %.3f %%" %
-          (100 * l2(run["slip"] - slip_exact, slip_exact, everywhere)))
+          (name, len(run["xi"]), run["length"].min(), run["length"].max()))
+    print("  slip L2 error, whole crack:        %.3f %%" % (100 * e["slip"]))
     print("  max slip: computed %.4f mm, analytic %.4f mm (at xi = 0)" %
           (1e3 * run["slip"].max(), 1e3 * slip_scale * ell))
-    constant = np.full_like(xi, lambda_n_exact)
-    for bound in (None, 0.9, 0.8):
-        mask = everywhere if bound is None else np.abs(xi) < bound * ell
-        print("  lambda_n L2 error, %-14s %.3f %%" %
-              ("whole crack:" if bound is None else "|xi| < %.1f l:" % bound,
-               100 * l2(run["lambda_n"] - constant, constant, mask)))
-    inner = np.abs(run["lambda_n"][1:-1] / lambda_n_exact - 1)
+    for key, label in (("lambda_n", "whole crack:"), ("lambda_n_09", "|xi| < 0.9 l:"),
+                       ("lambda_n_08", "|xi| < 0.8 l:")):
+        print("  lambda_n L2 error, %-14s %.3f %%" % (label, 100 * e[key]))
     print("  lambda_n on the tip faces: %.3f and %.3f MPa (exact %.3f); "
           "largest deviation elsewhere %.2f %%; open faces: %d" %
-          (1e-6 * run["lambda_n"][0], 1e-6 * run["lambda_n"][-1],
-           1e-6 * lambda_n_exact, 100 * inner.max(),
-           np.count_nonzero(run["state"] == 0)))
+          (1e-6 * e["tips"][0], 1e-6 * e["tips"][1], 1e-6 * lambda_n_exact,
+           100 * e["inner_deviation"], e["open"]))
 
 
 def plot(runs, png):
@@ -106,4 +118,5 @@ def main():
         plot(runs, args.png)
 
 
-main()
+if __name__ == "__main__":
+    main()

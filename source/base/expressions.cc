@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 
 namespace PolyFrac
@@ -58,12 +59,15 @@ namespace PolyFrac
     }
 
     /** Redirects std::cerr for its lifetime: deal.II's FunctionParser
-     * prints muparser's raw diagnostics there before it throws. */
+     * prints muparser's raw diagnostics there before it throws. One at a
+     * time: threads make their own expressions (PerThreadFunction), and
+     * two interleaved swaps would leave std::cerr on a destroyed buffer. */
     class SilencedCerr
     {
     public:
       SilencedCerr()
-        : saved(std::cerr.rdbuf(swallowed.rdbuf()))
+        : lock(one_at_a_time())
+        , saved(std::cerr.rdbuf(swallowed.rdbuf()))
       {}
       ~SilencedCerr()
       {
@@ -71,8 +75,16 @@ namespace PolyFrac
       }
 
     private:
-      std::ostringstream swallowed;
-      std::streambuf    *saved;
+      static std::mutex &
+      one_at_a_time()
+      {
+        static std::mutex mutex;
+        return mutex;
+      }
+
+      std::lock_guard<std::mutex> lock;
+      std::ostringstream          swallowed;
+      std::streambuf             *saved;
     };
   } // namespace
 

@@ -27,10 +27,7 @@ namespace PolyFrac
     , geometry(geometry)
     , network(network)
     , dofs(dofs)
-    , body_force(make_expression<dim>("Body force/Function expression",
-                                      prm.body_force,
-                                      dim,
-                                      prm.constants))
+    , body_force(make_body_force(0.))
     , dirichlet(make_expression<dim>("Boundary conditions/Dirichlet expression",
                                      prm.boundary.dirichlet_expression,
                                      dim,
@@ -47,11 +44,36 @@ namespace PolyFrac
                                     prm.fractures.traction,
                                     dim,
                                     prm.constants))
-    , initial_stress(make_expression<dim>("Initial stress/Stress",
-                                          prm.initial_stress,
-                                          dim * dim,
-                                          prm.constants))
+    , initial_stress(make_initial_stress(0.))
   {}
+
+
+
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  Elasticity<dim>::make_body_force(const double time) const
+  {
+    auto force = make_expression<dim>("Body force/Function expression",
+                                      prm.body_force,
+                                      dim,
+                                      prm.constants);
+    force->set_time(time);
+    return force;
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  Elasticity<dim>::make_initial_stress(const double time) const
+  {
+    auto stress = make_expression<dim>("Initial stress/Stress",
+                                       prm.initial_stress,
+                                       dim * dim,
+                                       prm.constants);
+    stress->set_time(time);
+    return stress;
+  }
 
 
 
@@ -307,13 +329,25 @@ namespace PolyFrac
       Vector<double>                       load;
       std::vector<types::global_dof_index> dofs;
     };
-    cell_loop<CellSystem>(
+    /** A thread's own body force and in-situ stress. */
+    struct Loads
+    {
+      PerThreadFunction<dim> force, stress;
+    };
+    cell_loop<Loads, CellSystem>(
       geometry.mesh.n_cells(),
-      [this](const unsigned int cell, CellSystem &copy) {
+      Loads{PerThreadFunction<dim>([this, t = body_force->get_time()]() {
+              return make_body_force(t);
+            }),
+            PerThreadFunction<dim>([this, t = initial_stress->get_time()]() {
+              return make_initial_stress(t);
+            })},
+      [this](const unsigned int cell, Loads &loads, CellSystem &copy) {
         const LocalReconstruction<dim> local(geometry, dofs, network, cell);
         copy.stiffness = local_stiffness(local);
-        copy.load      = cell_load(local, cell);
-        copy.dofs      = dofs.cell_dofs(cell);
+        copy.load =
+          cell_load(local, cell, loads.force.get(), loads.stress.get());
+        copy.dofs = dofs.cell_dofs(cell);
       },
       [&](const CellSystem &copy) {
         c.distribute_local_to_global(
@@ -326,12 +360,14 @@ namespace PolyFrac
   template <int dim>
   Vector<double>
   Elasticity<dim>::cell_load(const LocalReconstruction<dim> &local,
-                             const unsigned int              cell) const
+                             const unsigned int              cell,
+                             const Function<dim>            &force,
+                             const Function<dim>            &stress) const
   {
     Vector<double> f(dim), b(dim * local.n_local());
     for (const auto &q : geometry.quadrature(cell))
       {
-        body_force->vector_value(q.point, f);
+        force.vector_value(q.point, f);
         for (unsigned int t = 0; t < local.n_local(); ++t)
           {
             const double phi =
@@ -342,7 +378,7 @@ namespace PolyFrac
       }
     // In-situ stress: −|K| σ0(x̄_K):ε_K(v) = −|K| Σ_ij σ0_ij ∂_j v_i.
     const Tensor<2, dim> sigma0 =
-      initial_stress_value(geometry.cells[cell].centroid);
+      initial_stress_value(geometry.cells[cell].centroid, &stress);
     for (unsigned int t = 0; t < local.n_local(); ++t)
       for (unsigned int d = 0; d < dim; ++d)
         b(dim * t + d) -=
@@ -359,8 +395,9 @@ namespace PolyFrac
     for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
       {
         const LocalReconstruction<dim> local(geometry, dofs, network, cell);
-        const Vector<double>           b          = cell_load(local, cell);
-        const auto                     local_dofs = dofs.cell_dofs(cell);
+        const Vector<double>           b =
+          cell_load(local, cell, *body_force, *initial_stress);
+        const auto local_dofs = dofs.cell_dofs(cell);
         for (unsigned int k = 0; k < b.size(); ++k)
           system_rhs(local_dofs[k]) += b(k);
       }
@@ -384,10 +421,11 @@ namespace PolyFrac
 
   template <int dim>
   Tensor<2, dim>
-  Elasticity<dim>::initial_stress_value(const Point<dim> &x) const
+  Elasticity<dim>::initial_stress_value(const Point<dim>    &x,
+                                        const Function<dim> *stress) const
   {
     Vector<double> value(dim * dim);
-    initial_stress->vector_value(x, value);
+    (stress != nullptr ? *stress : *initial_stress).vector_value(x, value);
     Tensor<2, dim> sigma0;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)

@@ -154,9 +154,13 @@ namespace PolyFrac
         // Per cell: ∫|u − Π^K u_h|², ∫|u|², ∫|∇u − ∇^K u_h|², ∫|∇u|².
         using Sums = std::array<double, 4>;
         Sums total{};
-        cell_loop<Sums>(
+        cell_loop<PerThreadFunction<dim>, Sums>(
           geometry.mesh.n_cells(),
-          [&](const unsigned int c, Sums &sums) {
+          PerThreadFunction<dim>([&]() {
+            return exact_field<dim>(prm, false, prm.exact.displacement, time);
+          }),
+          [&](const unsigned int c, PerThreadFunction<dim> &own, Sums &sums) {
+            const Function<dim>           &exact_u = own.get();
             const LocalReconstruction<dim> local(geometry, dofs, network, c);
             const auto                     values = state.local_values(dofs, c);
             const Tensor<2, dim>           grad_h = local.gradient(values);
@@ -165,8 +169,8 @@ namespace PolyFrac
             sums.fill(0.);
             for (const auto &q : geometry.quadrature(c))
               {
-                exact->vector_value(q.point, u);
-                exact->vector_gradient(q.point, grad_u);
+                exact_u.vector_value(q.point, u);
+                exact_u.vector_gradient(q.point, grad_u);
                 const Tensor<1, dim> u_h = local.potential(values, q.point);
                 for (unsigned int i = 0; i < dim; ++i)
                   {

@@ -155,10 +155,22 @@ namespace PolyFrac
     FullMatrix<double>
     local_stiffness(const LocalReconstruction<dim> &local) const;
 
-    /** ∫_K f·Π^K v for the local unknowns of @p local, on cell @p cell. */
+    /** ∫_K f·Π^K v − |K| σ0:ε_K(v) for the local unknowns of @p local, on
+     * cell @p cell, with the body force @p force and the in-situ stress
+     * @p stress (the members, or a thread's own copies). */
     Vector<double>
     cell_load(const LocalReconstruction<dim> &local,
-              const unsigned int              cell) const;
+              const unsigned int              cell,
+              const Function<dim>            &force,
+              const Function<dim>            &stress) const;
+
+    /** A new Body force/Function expression at time @p time. */
+    std::unique_ptr<FunctionParser<dim>>
+    make_body_force(const double time) const;
+
+    /** A new Initial stress/Stress at time @p time. */
+    std::unique_ptr<FunctionParser<dim>>
+    make_initial_stress(const double time) const;
 
     /**
      * Adds the cell stiffness matrices and body-force loads, condensed by
@@ -186,10 +198,11 @@ namespace PolyFrac
     const FractureNetwork<dim> &network;
     const DoFMap<dim>          &dofs;
 
-    /** σ0(@p x) of Initial stress/Stress; throws naming the point if it
-     * is not symmetric. */
+    /** σ0(@p x) of Initial stress/Stress (or of @p stress, a thread's own
+     * copy); throws naming the point if it is not symmetric. */
     Tensor<2, dim>
-    initial_stress_value(const Point<dim> &x) const;
+    initial_stress_value(const Point<dim>    &x,
+                         const Function<dim> *stress = nullptr) const;
 
     std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
       fracture_pressure, traction, initial_stress;

@@ -1,0 +1,183 @@
+#!/usr/bin/python3
+"""B1 speed against accuracy: runs PolyFrac's B1 variants, each point
+--runs times (default 3), and charts the slip and lambda_n L2 errors
+against the wall time (median) and against the unknowns, log-log, one line
+per variant, with the peers' points measured on this machine
+(doc/benchmarks.md, "Numbers from other codes"). Wall is the whole program
+(start-up, gmsh meshing, assembly, Newton, output), as for the peers.
+
+Variants (benchmarks/B1.md, "The tip"):
+- uniform family prm/geo/b1.geo (0.1 m on the crack, split per level), with
+  the paper's plus-side bubbles and with split bubbles;
+- prm/geo/b1-graded.geo (graded towards the tips, mirror-symmetric about
+  the crack) at several gradings, plus side and split; the shipped scene is
+  the split one at grade 0.1.
+
+usage: benchmarks/b1_chart.py [--runs N] [--program build/polyfrac]
+writes benchmarks/b1-chart.csv and benchmarks/b1-chart.png (needs Debian's
+python3-numpy, python3-meshio and python3-matplotlib)."""
+import argparse
+import csv
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import b1_profile  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PRM = os.path.join(ROOT, "prm", "b1-inclined-crack.prm")
+
+# The peers, measured on this machine (doc/benchmarks.md): name, mesh
+# strategy, unknowns, wall (s), slip L2 error, lambda_n L2 error (whole crack).
+PEERS = [
+    ("GetFEM 5.4 P1/P1", "crack cells 0.025 m", 36256, 2.6, 0.030, 0.148),
+    ("GetFEM 5.4 P2/P1", "crack cells 0.1 m", 9750, 0.30, 0.033, 0.172),
+    ("GetFEM 5.4 P2/P1", "crack cells 0.05 m", 36782, 1.75, 0.0172, 0.123),
+    ("GetFEM 5.4 P2/P1", "crack cells 0.025 m", 143590, 14.9, 0.0105, 0.091),
+    ("PorePy 1.11", "crack cells 0.025 m", 84012, 171.0, 0.020, 0.107),
+]
+
+
+def graded_geo(directory, grade):
+    """b1-graded.geo with another grading (sizes htip + grade r)."""
+    text = open(os.path.join(ROOT, "prm", "geo", "b1-graded.geo")).read()
+    text, n = re.subn(r"^grade = [^;]*;", "grade = %g;" % grade, text,
+                      flags=re.M)
+    assert n == 1, "b1-graded.geo has no 'grade = ...;' line"
+    path = os.path.join(directory, "b1-graded-%g.geo" % grade)
+    open(path, "w").write(text)
+    return path
+
+
+def run(program, output, settings, runs):
+    """Runs the scene `runs` times; returns the median wall (s), the median
+    peak memory (MB), the unknowns and the errors of the last run."""
+    walls, memories = [], []
+    for _ in range(runs):
+        command = ["/usr/bin/time", "-f", "%e %M", program, PRM,
+                   "--set", "Output/Output directory=%s" % output,
+                   "--set", "Output/Print timings=false",
+                   "--set", "Convergence study/Number of refinement levels=1"]
+        for entry, value in settings:
+            command += ["--set", "%s=%s" % (entry, value)]
+        result = subprocess.run(command, capture_output=True, text=True)
+        if result.returncode != 0:
+            sys.exit("B1 run failed: %s\n%s%s" % (" ".join(command),
+                                                  result.stdout[-2000:],
+                                                  result.stderr[-2000:]))
+        wall, memory = result.stderr.strip().splitlines()[-1].split()
+        walls.append(float(wall))
+        memories.append(float(memory) / 1024)
+    with open(os.path.join(output, "convergence.csv")) as table:
+        unknowns = int(next(csv.DictReader(table))["n_dofs"])
+    errors = b1_profile.errors(b1_profile.read(output, 0))
+    return statistics.median(walls), statistics.median(memories), unknowns, errors
+
+
+def variants(directory):
+    """(variant, mesh strategy, settings) of every point."""
+    points = []
+    for placement, name in (("plus side", "uniform, plus side (paper)"),
+                            ("split", "uniform, split")):
+        for level in range(4):
+            points.append((name, "b1.geo, %g m on the crack" % (0.1 / 2**level),
+                           [("Mesh/File name", "geo/b1.geo"),
+                            ("Mesh/Global refinements", level),
+                            ("Contact/Bubble placement", placement)]))
+    for placement, grades in (("plus side", (0.2, 0.1, 0.05)),
+                              ("split", (0.3, 0.2, 0.15, 0.1, 0.07, 0.05))):
+        for grade in grades:
+            points.append(("graded symmetric, %s" % placement,
+                           "b1-graded.geo, grade %g" % grade,
+                           [("Mesh/File name", graded_geo(directory, grade)),
+                            ("Contact/Bubble placement", placement)]))
+    return points
+
+
+def chart(rows, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(2, 2, figsize=(12, 9))
+    names = []
+    for row in rows:
+        if row["variant"] not in names:
+            names.append(row["variant"])
+    for name in names:
+        points = [row for row in rows if row["variant"] == name]
+        peer = points[0]["code"] != "PolyFrac"
+        style = dict(marker="s" if peer else "o", ms=5,
+                     linestyle="none" if peer else "-")
+        for i, error in enumerate(("slip_error", "lambda_n_error")):
+            for j, axis in enumerate(("wall_s", "unknowns")):
+                ax = axes[i][j]
+                ax.loglog([p[axis] for p in points],
+                          [100 * max(p[error], 1e-4) for p in points],
+                          label=name, **style)
+                for p in points:
+                    ax.annotate(p["label"], (p[axis], 100 * max(p[error], 1e-4)),
+                                fontsize=5, xytext=(3, 2),
+                                textcoords="offset points")
+    for i, error in enumerate(("slip L2 error (%)",
+                               "lambda_n L2 error, whole crack (%)")):
+        for j, axis in enumerate(("wall (s), median", "unknowns")):
+            axes[i][j].set_xlabel(axis)
+            axes[i][j].set_ylabel(error)
+            axes[i][j].grid(True, which="both", alpha=0.3)
+    axes[0][0].axhline(1, color="grey", lw=0.8)
+    axes[1][0].axhline(2, color="grey", lw=0.8)
+    axes[0][0].axvline(1.5, color="grey", lw=0.8)
+    axes[0][1].legend(fontsize=7)
+    fig.suptitle("B1 (inclined crack, Coulomb): accuracy against wall time and "
+                 "unknowns, this machine\n(grey: the goal, slip 1 %, "
+                 "lambda_n 2 %, 1.5 s; labels: crack cell size or grading)")
+    fig.tight_layout()
+    fig.savefig(png, dpi=100)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--program", default=os.path.join(ROOT, "build",
+                                                          "polyfrac"))
+    args = parser.parse_args()
+    print("load before: %s" % open("/proc/loadavg").read().strip())
+    rows = []
+    with tempfile.TemporaryDirectory() as directory:
+        for name, strategy, settings in variants(directory):
+            output = os.path.join(directory, "out")
+            wall, memory, unknowns, e = run(args.program, output, settings,
+                                            args.runs)
+            rows.append(dict(code="PolyFrac", variant=name, mesh=strategy,
+                             label=strategy.split(", ")[-1],
+                             unknowns=unknowns, wall_s=wall,
+                             peak_memory_mb=round(memory, 1),
+                             slip_error=e["slip"], lambda_n_error=e["lambda_n"],
+                             open_faces=e["open"]))
+            print("%-28s %-30s %8d unknowns %7.2f s %6.0f MB  slip %.3f %%  "
+                  "lambda_n %.3f %%  open %d" %
+                  (name, strategy, unknowns, wall, memory, 100 * e["slip"],
+                   100 * e["lambda_n"], e["open"]), flush=True)
+    for code, strategy, unknowns, wall, slip, lambda_n in PEERS:
+        rows.append(dict(code=code, variant=code, mesh=strategy,
+                         label=strategy.replace("crack cells ", ""),
+                         unknowns=unknowns, wall_s=wall, peak_memory_mb="",
+                         slip_error=slip, lambda_n_error=lambda_n,
+                         open_faces=""))
+    print("load after: %s" % open("/proc/loadavg").read().strip())
+    table = os.path.join(ROOT, "benchmarks", "b1-chart.csv")
+    with open(table, "w", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    png = os.path.join(ROOT, "benchmarks", "b1-chart.png")
+    chart(rows, png)
+    print("wrote %s and %s" % (table, png))
+
+
+if __name__ == "__main__":
+    main()
