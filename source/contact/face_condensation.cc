@@ -497,7 +497,8 @@ namespace PolyFrac
         amg_matrix =
           std::make_unique<TrilinosWrappers::SparseMatrix>(std::move(matrix));
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        initialize_amg(*amg, *amg_matrix, dofs, vertices);
+        initialize_amg(
+          *amg, *amg_matrix, dofs, vertices, solver.smoother_sweeps);
         amg_structure = structure;
       }
     Vector<double> y(n_u);

@@ -304,6 +304,8 @@ namespace PolyFrac
       double tolerance;
       /** Maximum iterations of CG. */
       unsigned int max_iterations;
+      /** Smoother sweeps: the degree of ML's Chebyshev smoother. */
+      unsigned int smoother_sweeps;
     } solver; /**< The subsection Linear solver. */
 
     /** Output. */

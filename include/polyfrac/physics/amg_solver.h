@@ -20,14 +20,16 @@ namespace PolyFrac
    * Initialises @p amg, Trilinos ML smoothed aggregation, for @p matrix,
    * whose rows are the displacement dofs of @p dofs (node sides, then
    * bubbles), with the rigid-body modes of the node sides as near null
-   * space.
+   * space and @p smoother_sweeps Chebyshev sweeps per level (`Linear
+   * solver/Smoother sweeps`).
    */
   template <int dim>
   void
   initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const DoFMap<dim>                    &dofs,
-                 const std::vector<Point<dim>>        &vertices);
+                 const std::vector<Point<dim>>        &vertices,
+                 const unsigned int                    smoother_sweeps);
 
   /**
    * Solves @p matrix @p x = @p rhs by CG (@p symmetric) or restarted GMRES,
