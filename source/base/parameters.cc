@@ -730,6 +730,17 @@ namespace PolyFrac
                       "acceleration of the fixed-stress iteration (the last "
                       "m differences of the pressure iterates); 0: the plain "
                       "fixed-stress iteration.");
+    prm.declare_entry(
+      "Forcing term",
+      "1e-3",
+      Patterns::Double(0),
+      "Linear solver/Method = AMG with contact: the Krylov solve of a "
+      "condensed Newton step stops once its residual is below η times the "
+      "relative complementarity residual, or below Tolerance/10, whichever "
+      "is larger (inexact Newton: no accuracy is spent on a linearisation "
+      "whose active set is still wrong; the momentum equation is linear). "
+      "0: every step to Tolerance/10 (benchmarks/README.md, \"Inexact "
+      "Newton steps\").");
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");
@@ -1132,6 +1143,7 @@ namespace PolyFrac
     nonlinear.max_coupling_iterations =
       prm->get_integer("Maximum coupling iterations");
     nonlinear.anderson_depth = prm->get_integer("Anderson depth");
+    nonlinear.forcing_term   = prm->get_double("Forcing term");
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
@@ -1459,6 +1471,7 @@ namespace PolyFrac
         warn_if_set("Nonlinear solver", "Maximum iterations");
         warn_if_set("Nonlinear solver", "Tolerance");
         warn_if_set("Nonlinear solver", "Initial guess");
+        warn_if_set("Nonlinear solver", "Forcing term");
         warn_if_set("Exact solution", "Contact traction");
       }
     else

@@ -293,6 +293,12 @@ namespace PolyFrac
       unsigned int max_coupling_iterations;
       /** Anderson depth m ≥ 0 of the fixed-stress iteration (0: plain). */
       unsigned int anderson_depth;
+      /**
+       * Forcing term η ≥ 0 of the inexact Newton steps: a condensed step's
+       * Krylov solve may stop at η times the relative complementarity
+       * residual.
+       */
+      double forcing_term;
     } nonlinear; /**< The subsection Nonlinear solver. */
 
     /** Linear solver. */
