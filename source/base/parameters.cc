@@ -1507,7 +1507,12 @@ namespace PolyFrac
         warn_if_set("Exact solution", "Fracture pressure");
       }
     if (model == "flow")
-      warn_if_set("Flow", "Pressure stabilisation");
+      {
+        warn_if_set("Flow", "Pressure stabilisation");
+        // The flow AMG keeps ML's smoother; there is no contact Newton.
+        warn_if_set("Linear solver", "Smoother sweeps");
+        warn_if_set("Nonlinear solver", "Forcing term");
+      }
   }
 
 
