@@ -6,6 +6,7 @@
 #include <polyfrac/contact/face_condensation.h>
 #include <polyfrac/physics/amg_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -36,6 +37,67 @@ namespace PolyFrac
         AssertThrow(dirichlet.count(dofs.bubble_dof(i, c)) == 0,
                     ExcMessage("Face condensation needs the bubbles "
                                "(Contact/Bubbles = true)."));
+    make_reduced_pattern();
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  FaceCondensation<dim>::face_stencil(const unsigned int i) const
+  {
+    std::vector<types::global_dof_index> stencil;
+    for (const auto &[block, w] : jumps[i])
+      if (dim * block != dofs.bubble_dof(i, 0))
+        for (unsigned int e = 0; e < dim; ++e)
+          if (free_nodal[dim * block + e])
+            stencil.push_back(dim * block + e);
+    for (unsigned int c = 0; c < dim; ++c)
+      stencil.push_back(dofs.bubble_dof(i, c));
+    std::sort(stencil.begin(), stencil.end());
+    stencil.erase(std::unique(stencil.begin(), stencil.end()), stencil.end());
+    return stencil;
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::make_reduced_pattern()
+  {
+    const types::global_dof_index n_u          = dofs.n_displacement_dofs();
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    DynamicSparsityPattern        dsp(n_u);
+    for (types::global_dof_index row = 0; row < n_u; ++row)
+      {
+        dsp.add(row, row);
+        if (row < first_bubble && free_nodal[row])
+          for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
+               ++entry)
+            if (entry->column() < first_bubble && free_nodal[entry->column()])
+              dsp.add(row, entry->column());
+      }
+    for (unsigned int i = 0; i < jumps.size(); ++i)
+      {
+        const auto stencil = face_stencil(i);
+        for (unsigned int c = 0; c < dim; ++c)
+          for (auto entry = stiffness.begin(dofs.bubble_dof(i, c));
+               entry != stiffness.end(dofs.bubble_dof(i, c));
+               ++entry)
+            {
+              const types::global_dof_index x = entry->column();
+              if (x >= first_bubble && x < n_u)
+                for (const auto row : face_stencil((x - first_bubble) / dim))
+                  dsp.add_entries(row, stencil.begin(), stencil.end(), true);
+              else if (x < first_bubble && free_nodal[x])
+                {
+                  dsp.add_entries(x, stencil.begin(), stencil.end(), true);
+                  for (const auto row : stencil)
+                    dsp.add(row, x);
+                }
+            }
+      }
+    reduced_pattern.copy_from(dsp);
   }
 
 
@@ -314,21 +376,86 @@ namespace PolyFrac
   FaceCondensation<dim>::make_reduced_operator(
     const std::vector<FaceLinearisation<dim>> &faces,
     const std::vector<LocalRows>              &rows,
-    const std::vector<bool>                   &structure,
     TrilinosWrappers::SparseMatrix            &matrix)
   {
-    // Each intermediate matrix is freed as soon as the next one is built,
-    // which keeps at most two of them alive. Their patterns are rebuilt
-    // only when the row structure changes.
     const types::global_dof_index n_u          = dofs.n_displacement_dofs();
-    const bool                    new_patterns = structure != product_structure;
-    SparseMatrix<double>          projected(projected_pattern);
-    {
-      SparseMatrix<double> product(product_pattern);
-      stiffness.mmult(product, elimination, Vector<double>(), new_patterns);
-      elimination.Tmmult(projected, product, Vector<double>(), new_patterns);
-    }
-    product_structure = structure;
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    SparseMatrix<double>          reduced(reduced_pattern);
+
+    // D A D, a row at a time (columns sorted: A stores its diagonal first).
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (types::global_dof_index row = 0; row < first_bubble; ++row)
+      if (free_nodal[row])
+        {
+          columns.clear();
+          values.clear();
+          for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
+               ++entry)
+            if (entry->column() < first_bubble && free_nodal[entry->column()])
+              {
+                const auto at = std::upper_bound(columns.begin(),
+                                                 columns.end(),
+                                                 entry->column());
+                values.insert(values.begin() + (at - columns.begin()),
+                              entry->value());
+                columns.insert(at, entry->column());
+              }
+          reduced.add(
+            row, columns.size(), columns.data(), values.data(), false, true);
+        }
+
+    // D A W + (D A W)^T + W^T A W, face by face: K = A W restricted to the
+    // columns of the face's stencil, one row per dof its bubble couples to.
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        const auto stencil = face_stencil(i);
+        std::map<types::global_dof_index, Vector<double>> K;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const types::global_dof_index bubble = dofs.bubble_dof(i, c);
+            Vector<double>                W(stencil.size());
+            for (auto entry = elimination.begin(bubble);
+                 entry != elimination.end(bubble);
+                 ++entry)
+              W(std::lower_bound(stencil.begin(),
+                                 stencil.end(),
+                                 entry->column()) -
+                stencil.begin()) = entry->value();
+            for (auto entry = stiffness.begin(bubble);
+                 entry != stiffness.end(bubble);
+                 ++entry)
+              if (entry->column() < n_u && (entry->column() >= first_bubble ||
+                                            free_nodal[entry->column()]))
+                {
+                  auto &row = K[entry->column()];
+                  if (row.size() == 0)
+                    row.reinit(stencil.size());
+                  row.add(entry->value(), W);
+                }
+          }
+        for (const auto &[x, row] : K)
+          if (x < first_bubble)
+            {
+              reduced.add(
+                x, stencil.size(), stencil.data(), row.begin(), false, true);
+              for (unsigned int s = 0; s < stencil.size(); ++s)
+                reduced.add(stencil[s], x, row(s));
+            }
+          else
+            for (auto entry = elimination.begin(x); entry != elimination.end(x);
+                 ++entry)
+              {
+                Vector<double> scaled(row);
+                scaled *= entry->value();
+                reduced.add(entry->column(),
+                            stencil.size(),
+                            stencil.data(),
+                            scaled.begin(),
+                            false,
+                            true);
+              }
+      }
 
     // The reduced dofs: free node sides, bubble components and jump
     // variables; the others (fixed, prescribed jumps) get a unit row.
@@ -336,51 +463,9 @@ namespace PolyFrac
     for (unsigned int i = 0; i < faces.size(); ++i)
       for (const unsigned int t : rows[i].traction)
         reduced_dof[dofs.bubble_dof(i, t)] = true;
-
-    // The coupling −(1/w_b) (G^T C_k)(Z^T A q_k)^T of the Coulomb slip faces.
-    std::vector<
-      std::tuple<types::global_dof_index, types::global_dof_index, double>>
-      coupling;
-    for (unsigned int i = 0; i < faces.size(); ++i)
-      if (rows[i].coupled)
-        for (unsigned int k = 0; k < dim; ++k)
-          if (rows[i].kinematic[k])
-            {
-              const auto traction = traction_coupling(faces[i], rows[i], i, k);
-              const auto momentum =
-                reduced_functional(bubble_momentum(faces[i], i, k));
-              for (const auto &[row, u] : traction)
-                for (const auto &[column, v] : momentum)
-                  coupling.emplace_back(row, column, -u * v / bubble_weight(i));
-            }
-
-    DynamicSparsityPattern dsp(n_u);
-    for (const auto &[row, column, value] : coupling)
-      dsp.add(row, column);
+    double diagonal_scale = 0;
     for (types::global_dof_index row = 0; row < n_u; ++row)
-      {
-        dsp.add(row, row);
-        for (auto entry = projected.begin(row); entry != projected.end(row);
-             ++entry)
-          dsp.add(row, entry->column());
-      }
-    for (unsigned int i = 0; i < faces.size(); ++i)
-      for (const unsigned int a : rows[i].traction)
-        for (const unsigned int b : rows[i].traction)
-          dsp.add(dofs.bubble_dof(i, a), dofs.bubble_dof(i, b));
-    SparsityPattern reduced_pattern;
-    reduced_pattern.copy_from(dsp);
-    dsp.reinit(0, 0);
-    SparseMatrix<double> reduced(reduced_pattern);
-    double               diagonal_scale = 0;
-    for (types::global_dof_index row = 0; row < n_u; ++row)
-      {
-        for (auto entry = projected.begin(row); entry != projected.end(row);
-             ++entry)
-          reduced.add(row, entry->column(), entry->value());
-        diagonal_scale += std::abs(projected.el(row, row)) / n_u;
-      }
-    projected.clear();
+      diagonal_scale += std::abs(reduced.diag_element(row)) / n_u;
     for (types::global_dof_index row = 0; row < n_u; ++row)
       if (!reduced_dof[row])
         reduced.set(row, row, diagonal_scale);
@@ -396,9 +481,23 @@ namespace PolyFrac
                           dofs.bubble_dof(i, T[b]),
                           faces[i].measure * rows[i].E(a, b));
       }
-    for (const auto &[row, column, value] : coupling)
-      reduced.add(row, column, value);
-    matrix.reinit(reduced, 0.); // no (absolute) drop tolerance
+
+    // The coupling −(1/w_b) (G^T C_k)(Z^T A q_k)^T of the Coulomb slip faces.
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      if (rows[i].coupled)
+        for (unsigned int k = 0; k < dim; ++k)
+          if (rows[i].kinematic[k])
+            {
+              const auto traction = traction_coupling(faces[i], rows[i], i, k);
+              const auto momentum =
+                reduced_functional(bubble_momentum(faces[i], i, k));
+              for (const auto &[row, u] : traction)
+                for (const auto &[column, v] : momentum)
+                  reduced.add(row, column, -u * v / bubble_weight(i));
+            }
+    // No (absolute) drop tolerance: only the exact zeros of the entries
+    // this row structure leaves out are dropped.
+    matrix.reinit(reduced, 0.);
   }
 
 
@@ -445,7 +544,7 @@ namespace PolyFrac
     make_elimination(faces, rows, offset);
     TrilinosWrappers::SparseMatrix matrix;
     const std::vector<bool>        structure = row_structure(rows);
-    make_reduced_operator(faces, rows, structure, matrix);
+    make_reduced_operator(faces, rows, matrix);
 
     // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
     // traction the open, free and slip rows prescribe.

@@ -191,14 +191,37 @@ namespace PolyFrac
                     const unsigned int            k) const;
 
     /**
+     * The reduced dofs that a row of Z on the bubble of face @p i can
+     * reach, whatever the kinds of its rows: the free node-side dofs of
+     * [[u]]_σ and the bubble's own dofs, sorted.
+     */
+    std::vector<types::global_dof_index>
+    face_stencil(const unsigned int i) const;
+
+    /**
+     * The pattern of Z^T A Z for every row structure at once: that of A on
+     * the free node-side dofs, the stencil of each face against the dofs
+     * that its bubble couples to in A (both ways), and the stencils of two
+     * faces whose bubbles are coupled in A. It holds the Coulomb coupling
+     * and Σ_σ |σ| E too, and depends on the mesh only.
+     */
+    void
+    make_reduced_pattern();
+
+    /**
      * @p matrix = Z^T A Z + Σ_σ |σ| E (on the jump variables) + the
-     * coupling of the Coulomb slip faces; @p structure is row_structure()
-     * of @p rows.
+     * coupling of the Coulomb slip faces.
+     *
+     * Z is the identity D on the free node-side dofs and has nontrivial
+     * rows W on the bubbles only, so Z^T A Z = D A D + D A W + (D A W)^T +
+     * W^T A W: A is copied once, and the three corrections are sums over
+     * the rows of A on the bubbles (A is symmetric), face by face. Entries
+     * that are zero for the current row structure are dropped when the
+     * operator is copied to Trilinos.
      */
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
                           const std::vector<LocalRows>              &rows,
-                          const std::vector<bool>                   &structure,
                           TrilinosWrappers::SparseMatrix            &matrix);
 
     const SparseMatrix<double>                      &stiffness;
@@ -223,12 +246,8 @@ namespace PolyFrac
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<bool>                                  amg_structure;
 
-    /**
-     * The sparsity patterns of A Z and Z^T A Z, which depend on the row
-     * structure only (product_structure): reused while it stays.
-     */
-    SparsityPattern   product_pattern, projected_pattern;
-    std::vector<bool> product_structure;
+    /** The pattern of the reduced operator (make_reduced_pattern()). */
+    SparsityPattern reduced_pattern;
 
     /** Dofs that are neither fixed nor bubbles. */
     std::vector<bool> free_nodal;
