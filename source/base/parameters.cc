@@ -764,9 +764,8 @@ namespace PolyFrac
       "Method = AMG: the degree of the Chebyshev smoother on every level "
       "of the displacement AMG (elasticity and condensed contact steps; "
       "the flow AMG keeps ML's 2). More sweeps cost more per iteration "
-      "and save iterations: on B6's condensed Coulomb steps 3 takes 24 % "
-      "fewer GMRES iterations than 2 and 13 % less time "
-      "(benchmarks/README.md, \"AMG smoother\").");
+      "and save iterations; the default was measured on B6's condensed "
+      "Coulomb steps (benchmarks/README.md, \"AMG smoother\").");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -1449,12 +1448,13 @@ namespace PolyFrac
     ParameterHandler defaults;
     declare(defaults, dim);
     const auto warn_if_set = [&](const std::string &subsection,
-                                 const std::string &entry) {
+                                 const std::string &entry,
+                                 const std::string &user = "") {
       prm->enter_subsection(subsection);
       defaults.enter_subsection(subsection);
       if (prm->get(entry) != defaults.get(entry))
-        warnings.push_back(subsection + "/" + entry +
-                           " is not used by Model = " + model +
+        warnings.push_back(subsection + "/" + entry + " is not used by " +
+                           (user.empty() ? "Model = " + model : user) +
                            " and is ignored");
       prm->leave_subsection();
       defaults.leave_subsection();
@@ -1512,6 +1512,14 @@ namespace PolyFrac
         // The flow AMG keeps ML's smoother; there is no contact Newton.
         warn_if_set("Linear solver", "Smoother sweeps");
         warn_if_set("Nonlinear solver", "Forcing term");
+      }
+    else if (solver.method == "direct")
+      {
+        // The AMG's smoother and the condensed steps' Krylov stop.
+        const std::string direct = "Linear solver/Method = direct";
+        warn_if_set("Linear solver", "Smoother sweeps", direct);
+        if (model != "elasticity")
+          warn_if_set("Nonlinear solver", "Forcing term", direct);
       }
   }
 

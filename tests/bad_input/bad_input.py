@@ -417,6 +417,12 @@ CASES = {
         "`Lame lambda = -0.5`, `Lame mu = 1` in 2D: right, runs",
         [], files={"scene.prm": section("Material", Lame_lambda="-0.5",
                                         Lame_mu="1")}, status=0),
+    "smoother_sweeps_with_direct": case(
+        "`Smoother sweeps = 2` with `Method = direct`: a warning, runs",
+        ["Linear solver/Smoother sweeps is not used by Linear solver/Method "
+         "= direct and is ignored"],
+        files={"scene.prm": section("Linear solver", Smoother_sweeps="2")},
+        status=0),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
         ["<Lame mu> must be > 0, not 0.000000"],
