@@ -67,7 +67,9 @@ namespace PolyFrac
   {
     const types::global_dof_index n_u          = dofs.n_displacement_dofs();
     const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
-    DynamicSparsityPattern        dsp(n_u);
+    for (unsigned int i = 0; i < jumps.size(); ++i)
+      stencils.push_back(face_stencil(i));
+    DynamicSparsityPattern dsp(n_u);
     for (types::global_dof_index row = 0; row < n_u; ++row)
       {
         dsp.add(row, row);
@@ -79,7 +81,7 @@ namespace PolyFrac
       }
     for (unsigned int i = 0; i < jumps.size(); ++i)
       {
-        const auto stencil = face_stencil(i);
+        const auto &stencil = stencils[i];
         for (unsigned int c = 0; c < dim; ++c)
           for (auto entry = stiffness.begin(dofs.bubble_dof(i, c));
                entry != stiffness.end(dofs.bubble_dof(i, c));
@@ -87,7 +89,7 @@ namespace PolyFrac
             {
               const types::global_dof_index x = entry->column();
               if (x >= first_bubble && x < n_u)
-                for (const auto row : face_stencil((x - first_bubble) / dim))
+                for (const auto row : stencils[(x - first_bubble) / dim])
                   dsp.add_entries(row, stencil.begin(), stencil.end(), true);
               else if (x < first_bubble && free_nodal[x])
                 {
@@ -409,8 +411,9 @@ namespace PolyFrac
     // columns of the face's stencil, one row per dof its bubble couples to.
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
-        const auto stencil = face_stencil(i);
+        const auto                                       &stencil = stencils[i];
         std::map<types::global_dof_index, Vector<double>> K;
+        Vector<double> scaled(stencil.size());
         for (unsigned int c = 0; c < dim; ++c)
           {
             const types::global_dof_index bubble = dofs.bubble_dof(i, c);
@@ -446,8 +449,7 @@ namespace PolyFrac
             for (auto entry = elimination.begin(x); entry != elimination.end(x);
                  ++entry)
               {
-                Vector<double> scaled(row);
-                scaled *= entry->value();
+                scaled.equ(entry->value(), row);
                 reduced.add(entry->column(),
                             stencil.size(),
                             stencil.data(),
@@ -495,9 +497,7 @@ namespace PolyFrac
                 for (const auto &[column, v] : momentum)
                   reduced.add(row, column, -u * v / bubble_weight(i));
             }
-    // No (absolute) drop tolerance: only the exact zeros of the entries
-    // this row structure leaves out are dropped.
-    matrix.reinit(reduced, 0.);
+    matrix.reinit(reduced, 0.); // no (absolute) drop tolerance
   }
 
 
