@@ -11,7 +11,11 @@ Variants (benchmarks/B1.md, "The tip"):
   the paper's plus-side bubbles and with split bubbles;
 - prm/geo/b1-graded.geo (graded towards the tips, mirror-symmetric about
   the crack) at several gradings, plus side and split; the shipped scene is
-  the split one at grade 0.1.
+  the split one at grade 0.1;
+- Mesh/Refinement = adaptive (doc/scheme.md §9, 20 % of the cells per
+  cycle), split, from b1.geo and from b1-graded.geo at grade 0.3: the point
+  of k cycles is a run of k levels (its wall includes every cycle), whose
+  last level gives the errors.
 
 usage: benchmarks/b1_chart.py [--runs N] [--program build/polyfrac]
 writes benchmarks/b1-chart.csv and benchmarks/b1-chart.png (needs Debian's
@@ -53,15 +57,17 @@ def graded_geo(directory, grade):
     return path
 
 
-def run(program, output, settings, runs):
-    """Runs the scene `runs` times; returns the median wall (s), the median
-    peak memory (MB), the unknowns and the errors of the last run."""
+def run(program, output, settings, levels, runs):
+    """Runs the scene with `levels` levels `runs` times; returns the median
+    wall (s), the median peak memory (MB), the unknowns and the errors of
+    the last level of the last run."""
     walls, memories = [], []
     for _ in range(runs):
         command = ["/usr/bin/time", "-f", "%e %M", program, PRM,
                    "--set", "Output/Output directory=%s" % output,
                    "--set", "Output/Print timings=false",
-                   "--set", "Convergence study/Number of refinement levels=1"]
+                   "--set", "Convergence study/Number of refinement levels=%d"
+                   % levels]
         for entry, value in settings:
             command += ["--set", "%s=%s" % (entry, value)]
         result = subprocess.run(command, capture_output=True, text=True)
@@ -73,13 +79,13 @@ def run(program, output, settings, runs):
         walls.append(float(wall))
         memories.append(float(memory) / 1024)
     with open(os.path.join(output, "convergence.csv")) as table:
-        unknowns = int(next(csv.DictReader(table))["n_dofs"])
-    errors = b1_profile.errors(b1_profile.read(output, 0))
+        unknowns = int(list(csv.DictReader(table))[-1]["n_dofs"])
+    errors = b1_profile.errors(b1_profile.read(output, levels - 1))
     return statistics.median(walls), statistics.median(memories), unknowns, errors
 
 
 def variants(directory):
-    """(variant, mesh strategy, settings) of every point."""
+    """(variant, mesh strategy, settings, levels) of every point."""
     points = []
     for placement, name in (("plus side", "uniform, plus side (paper)"),
                             ("split", "uniform, split")):
@@ -87,14 +93,23 @@ def variants(directory):
             points.append((name, "b1.geo, %g m on the crack" % (0.1 / 2**level),
                            [("Mesh/File name", "geo/b1.geo"),
                             ("Mesh/Global refinements", level),
-                            ("Contact/Bubble placement", placement)]))
+                            ("Contact/Bubble placement", placement)], 1))
     for placement, grades in (("plus side", (0.2, 0.1, 0.05)),
                               ("split", (0.3, 0.2, 0.15, 0.1, 0.07, 0.05))):
         for grade in grades:
             points.append(("graded symmetric, %s" % placement,
                            "b1-graded.geo, grade %g" % grade,
                            [("Mesh/File name", graded_geo(directory, grade)),
-                            ("Contact/Bubble placement", placement)]))
+                            ("Contact/Bubble placement", placement)], 1))
+    for base, geo in (("b1.geo", "geo/b1.geo"),
+                      ("b1-graded.geo grade 0.3", graded_geo(directory, 0.3))):
+        for cycles in range(1, 7):
+            points.append(("adaptive from %s, split" % base,
+                           "%s, %d cycles" % (base, cycles - 1),
+                           [("Mesh/File name", geo),
+                            ("Contact/Bubble placement", "split"),
+                            ("Mesh/Refinement", "adaptive"),
+                            ("Mesh/Refined fraction", 0.2)], cycles))
     return points
 
 
@@ -134,7 +149,8 @@ def chart(rows, png):
     axes[0][1].legend(fontsize=7)
     fig.suptitle("B1 (inclined crack, Coulomb): accuracy against wall time and "
                  "unknowns, this machine\n(grey: the goal, slip 1 %, "
-                 "lambda_n 2 %, 1.5 s; labels: crack cell size or grading)")
+                 "lambda_n 2 %, 1.5 s; labels: crack cell size, grading or "
+                 "adaptive cycles)")
     fig.tight_layout()
     fig.savefig(png, dpi=100)
 
@@ -148,10 +164,10 @@ def main():
     print("load before: %s" % open("/proc/loadavg").read().strip())
     rows = []
     with tempfile.TemporaryDirectory() as directory:
-        for name, strategy, settings in variants(directory):
+        for name, strategy, settings, levels in variants(directory):
             output = os.path.join(directory, "out")
             wall, memory, unknowns, e = run(args.program, output, settings,
-                                            args.runs)
+                                            levels, args.runs)
             rows.append(dict(code="PolyFrac", variant=name, mesh=strategy,
                              label=strategy.split(", ")[-1],
                              unknowns=unknowns, wall_s=wall,

@@ -1,8 +1,11 @@
+#include <deal.II/grid/grid_refinement.h>
+
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/mesh/gmsh_reader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace PolyFrac
@@ -73,12 +76,9 @@ namespace PolyFrac
   {
     // The fractures are either planar Fracture objects located
     // geometrically (generated box) or the tagged elements of a gmsh mesh.
-    const bool                       from_gmsh = prm.mesh.source == "gmsh";
-    const std::vector<Fracture<dim>> fractures = fractures_from<dim>(prm);
-    GmshMesh<dim>                    gmsh_mesh;
-    if (from_gmsh)
+    if (prm.mesh.source == "gmsh")
       {
-        AssertThrow(fractures.empty(),
+        AssertThrow(prm.fractures.geometries.empty(),
                     ExcMessage(
                       (prm.file_name.empty() ? std::string() :
                                                "In <" + prm.file_name + ">: ") +
@@ -87,20 +87,69 @@ namespace PolyFrac
                       "give the fractures as physical groups of the "
                       "mesh and list them in Fractures/Gmsh physical "
                       "tags."));
-        gmsh_mesh =
-          read_gmsh(prm, prm.mesh.global_refinements + level, triangulation);
+        gmsh_as_read = std::make_shared<const GmshMesh<dim>>(
+          read_gmsh(prm, prm.mesh.global_refinements + level, triangulation));
       }
     else
+      MeshBuilder::make_box(prm, level, triangulation);
+    MeshBuilder::refine_in_box(prm, triangulation);
+    build_on_triangulation(prm,
+                           !gmsh_as_read ?
+                             GmshMesh<dim>() :
+                           prm.mesh.local_refinements == 0 ?
+                             *gmsh_as_read :
+                             fracture_elements_after_refinement(*gmsh_as_read,
+                                                                triangulation));
+  }
+
+
+
+  template <int dim>
+  LevelDiscretization<dim>::LevelDiscretization(
+    const Parameters          &prm,
+    const LevelDiscretization &coarser,
+    const Vector<float>       &indicators)
+    : gmsh_as_read(coarser.gmsh_as_read)
+  {
+    AssertDimension(indicators.size(), coarser.mesh->n_cells());
+    triangulation.copy_triangulation(coarser.triangulation);
+    std::vector<unsigned int> fine_cells_of(coarser.mesh->n_cells(), 0);
+    for (const auto &fine : coarser.mesh->fine_cells)
+      ++fine_cells_of[fine.polytope];
+    Vector<float> criteria(triangulation.n_active_cells());
+    for (unsigned int c = 0; c < criteria.size(); ++c)
       {
-        MeshBuilder::make_box(prm, level, triangulation);
-        MeshBuilder::refine_in_box(prm, triangulation);
+        const unsigned int K = coarser.mesh->fine_cells[c].polytope;
+        criteria(c)          = indicators(K) / std::sqrt(fine_cells_of[K]);
       }
+    GridRefinement::refine_and_coarsen_fixed_number(triangulation,
+                                                    criteria,
+                                                    prm.mesh.refined_fraction,
+                                                    0);
+    triangulation.execute_coarsening_and_refinement();
+    build_on_triangulation(prm,
+                           gmsh_as_read ?
+                             fracture_elements_after_refinement(*gmsh_as_read,
+                                                                triangulation) :
+                             GmshMesh<dim>());
+  }
+
+
+
+  template <int dim>
+  void
+  LevelDiscretization<dim>::build_on_triangulation(
+    const Parameters    &prm,
+    const GmshMesh<dim> &gmsh_elements)
+  {
+    const bool                       from_gmsh = gmsh_as_read != nullptr;
+    const std::vector<Fracture<dim>> fractures = fractures_from<dim>(prm);
     mesh = std::make_unique<PolytopalMesh<dim>>(
       PolytopalMesh<dim>::from_triangulation(triangulation));
 
     // gmsh fractures are not planar Fracture objects: their vertices stay.
     std::vector<bool> fixed_vertices(mesh->vertices.size(), false);
-    for (const auto &element : gmsh_mesh.fracture_elements)
+    for (const auto &element : gmsh_elements.fracture_elements)
       for (const unsigned int v : element.vertices)
         fixed_vertices[v] = true;
     MeshBuilder::distort(prm, fractures, fixed_vertices, *mesh);
@@ -108,8 +157,8 @@ namespace PolyFrac
     const auto make_network = [&](const MeshGeometry<dim> &mesh_geometry) {
       return from_gmsh ?
                std::make_unique<FractureNetwork<dim>>(
-                 gmsh_mesh.fracture_names,
-                 tagged_faces(gmsh_mesh, mesh_geometry.mesh),
+                 gmsh_elements.fracture_names,
+                 tagged_faces(gmsh_elements, mesh_geometry.mesh),
                  mesh_geometry) :
                std::make_unique<FractureNetwork<dim>>(fractures, mesh_geometry);
     };

@@ -61,6 +61,15 @@ namespace PolyFrac
 
 
   template <int dim>
+  Vector<float>
+  ElasticityModel<dim>::error_indicators() const
+  {
+    return elasticity.error_indicators(state);
+  }
+
+
+
+  template <int dim>
   PatchData<dim, dim>
   ElasticityModel<dim>::matrix_output() const
   {
@@ -169,6 +178,15 @@ namespace PolyFrac
                           *discretization.network,
                           *discretization.dofs,
                           state);
+  }
+
+
+
+  template <int dim>
+  Vector<float>
+  ContactMechanicsModel<dim>::error_indicators() const
+  {
+    return contact.operator_elasticity().error_indicators(state);
   }
 
 

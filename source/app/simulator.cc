@@ -213,7 +213,7 @@ namespace PolyFrac
       }
     written_files.push_back("convergence.csv");
     out << std::endl;
-    write_convergence_table(out, rows);
+    write_convergence_table(out, rows, true, false, rate_reference(prm));
     if (prm.output.print_timings)
       timer.print_summary();
     out << "\nFiles written in " << prm.output.directory << ':';
@@ -256,7 +256,13 @@ namespace PolyFrac
   {
     Timer wall;
     timer.enter_subsection("mesh");
-    const LevelDiscretization<dim> discretization(prm, level);
+    auto discretization_pointer =
+      coarser_discretization ?
+        std::make_unique<const LevelDiscretization<dim>>(
+          prm, *coarser_discretization, coarser_indicators) :
+        std::make_unique<const LevelDiscretization<dim>>(prm, level);
+    const LevelDiscretization<dim> &discretization = *discretization_pointer;
+    coarser_discretization.reset();
     timer.leave_subsection();
 
     out << "Level " << level << std::endl;
@@ -296,6 +302,17 @@ namespace PolyFrac
       }
     for (const std::string &name : output.file_names())
       written_files.push_back(name);
+
+    if (prm.mesh.refinement == "adaptive" &&
+        level + 1 < prm.n_refinement_levels)
+      {
+        TimerOutput::Scope section(timer, "error indicators");
+        coarser_indicators = model->error_indicators();
+        AssertThrow(coarser_indicators.size() == discretization.mesh->n_cells(),
+                    ExcMessage("Mesh/Refinement = adaptive: Model = " +
+                               prm.model + " gives no error indicators."));
+        coarser_discretization = std::move(discretization_pointer);
+      }
     return row;
   }
 

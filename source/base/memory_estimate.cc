@@ -44,9 +44,17 @@ namespace PolyFrac
     if (prm.mesh.source != "hyper rectangle")
       return 0;
     const unsigned int dim = prm.dim;
-    const double       refinements =
-      prm.mesh.global_refinements + prm.n_refinement_levels - 1;
+    // An adaptive cycle refines the Refined fraction of the cells (and a
+    // few more, to keep one hanging node per face) into 2^dim children: a
+    // lower bound.
+    const bool   adaptive    = prm.mesh.refinement == "adaptive";
+    const double refinements = prm.mesh.global_refinements +
+                               (adaptive ? 0 : prm.n_refinement_levels - 1);
     double n_cells = std::pow(2., dim * refinements);
+    if (adaptive)
+      n_cells *=
+        std::pow(1 + prm.mesh.refined_fraction * (std::pow(2., dim) - 1),
+                 prm.n_refinement_levels - 1.);
     for (unsigned int d = 0; d < dim; ++d)
       n_cells *= prm.mesh.subdivisions[d];
     if (prm.mesh.cell_type == "simplex")

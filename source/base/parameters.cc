@@ -352,6 +352,25 @@ namespace PolyFrac
                       Patterns::Integer(0, 8),
                       "Extra refinements of the cells in the local refinement "
                       "box. Hanging nodes become polytope vertices.");
+    prm.declare_entry(
+      "Refinement",
+      "uniform",
+      Patterns::Selection("uniform|adaptive"),
+      "How level k > 0 of Convergence study/Number of refinement levels is "
+      "made. uniform: the base mesh refined k more times (box meshes by "
+      "deal.II, gmsh meshes by gmsh), then the local refinement box. "
+      "adaptive: the deal.II mesh of level k-1 with the <Refined fraction> "
+      "of its cells of largest a posteriori error indicator refined once "
+      "(doc/scheme.md §9; GridRefinement::refine_and_coarsen_fixed_number); "
+      "hanging nodes become polytope vertices. Rates are then taken against "
+      "n_dofs^(1/dim) instead of 1/h. Models elasticity and contact "
+      "mechanics.");
+    prm.declare_entry("Refined fraction",
+                      "0.3",
+                      Patterns::Double(0, 1),
+                      "Refinement = adaptive: the fraction of the cells "
+                      "refined per cycle, those of largest indicator "
+                      "(one cell in 3D becomes 8 or 4, in 2D 4 or 3).");
     prm.declare_entry("Distortion",
                       "0",
                       Patterns::Double(0, 0.4),
@@ -963,6 +982,21 @@ namespace PolyFrac
       mesh.box_lower = box[0][0];
       mesh.box_upper = box[0][1];
     }
+    mesh.refinement       = prm->get("Refinement");
+    mesh.refined_fraction = prm->get_double("Refined fraction");
+    AssertThrow(mesh.refinement == "uniform" || mesh.refined_fraction > 0,
+                ExcMessage(where + ": <Refinement = adaptive> needs <Refined "
+                                   "fraction> > 0 (0.3 refines the 30 % of "
+                                   "the cells with the largest error "
+                                   "indicators)."));
+    AssertThrow(mesh.refinement == "uniform" || model == "elasticity" ||
+                  model == "contact mechanics",
+                ExcMessage(where +
+                           ": <Refinement = adaptive> needs an a "
+                           "posteriori error indicator, which only "
+                           "Model = elasticity and contact mechanics "
+                           "have so far; Model = " +
+                           model + " needs <Refinement = uniform>."));
     mesh.local_refinements  = prm->get_integer("Local refinements");
     mesh.distortion         = prm->get_double("Distortion");
     mesh.distortion_type    = prm->get("Distortion type");
@@ -1506,6 +1540,8 @@ namespace PolyFrac
         warn_if_set("Exact solution", "Matrix pressure");
         warn_if_set("Exact solution", "Fracture pressure");
       }
+    if (mesh.refinement == "uniform")
+      warn_if_set("Mesh", "Refined fraction", "Mesh/Refinement = uniform");
     if (model == "flow")
       {
         warn_if_set("Flow", "Pressure stabilisation");

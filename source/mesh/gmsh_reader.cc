@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria_iterator.h>
 
 #include <polyfrac/mesh/gmsh_reader.h>
+#include <polyfrac/mesh/polytopal_mesh.h>
 
 #ifdef POLYFRAC_WITH_GMSH_API
 #  include <gmsh.h>
@@ -317,6 +318,51 @@ namespace PolyFrac
       tria.create_triangulation(vertices, cells, SubCellData());
     }
 
+    /** The vertex indices of the triangulation face @p face, sorted: the key
+     * that matches it to a gmsh element. */
+    template <typename FaceIterator>
+    std::vector<unsigned int>
+    sorted_vertices(const FaceIterator &face)
+    {
+      std::vector<unsigned int> key;
+      for (const unsigned int v : face->vertex_indices())
+        key.push_back(face->vertex_index(v));
+      std::sort(key.begin(), key.end());
+      return key;
+    }
+
+
+
+    /**
+     * Gives each face of @p tria that is a fracture element of @p mesh the
+     * index of that element as manifold id. Refinement passes manifold ids
+     * on to the children of a face (FlatManifold places their vertices,
+     * since no manifold is attached), so fracture_elements_after_refinement()
+     * finds the fracture elements of a refined mesh. Elements that match no
+     * face are left to the check of the fracture network.
+     */
+    template <int dim>
+    void
+    mark_fracture_faces(const GmshMesh<dim> &mesh, Triangulation<dim> &tria)
+    {
+      std::map<std::vector<unsigned int>, unsigned int> element_of;
+      for (unsigned int e = 0; e < mesh.fracture_elements.size(); ++e)
+        {
+          std::vector<unsigned int> key = mesh.fracture_elements[e].vertices;
+          std::sort(key.begin(), key.end());
+          element_of.emplace(key, e);
+        }
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          {
+            const auto it = element_of.find(sorted_vertices(face));
+            if (it != element_of.end())
+              face->set_manifold_id(it->second);
+          }
+    }
+
+
+
     /**
      * Sets the boundary id of each boundary face of @p tria to the tag of
      * the first physical group of @p groups (dimension dim-1, fracture tags
@@ -360,10 +406,8 @@ namespace PolyFrac
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             {
-              std::vector<unsigned int> key;
-              for (const unsigned int v : cell->face(f)->vertex_indices())
-                key.push_back(cell->face(f)->vertex_index(v));
-              std::sort(key.begin(), key.end());
+              const std::vector<unsigned int> key =
+                sorted_vertices(cell->face(f));
               const auto it = boundary_id_of.find(key);
               if (it == boundary_id_of.end())
                 cell->face(f)->set_boundary_id(0);
@@ -394,12 +438,6 @@ namespace PolyFrac
             Triangulation<dim> &tria)
   {
     const std::string &file_name = prm.mesh.file_name;
-    AssertThrow(prm.mesh.local_refinements == 0,
-                ExcMessage("Mesh/Local refinements > 0 is not supported with "
-                           "Mesh/Source = gmsh (the gmsh mesh <" +
-                           file_name +
-                           ">): refine it in the .geo file (mesh size "
-                           "fields) and set Local refinements = 0."));
     AssertThrow(std::ifstream(file_name).good(),
                 ExcMessage("The gmsh mesh <" + file_name +
                            "> cannot be opened: check Mesh/File name."));
@@ -476,14 +514,47 @@ namespace PolyFrac
             result.fracture_elements.push_back(fracture_element);
           }
       }
+    mark_fracture_faces(result, tria);
     return result;
 #endif
   }
 
 
 
+  template <int dim>
+  GmshMesh<dim>
+  fracture_elements_after_refinement(const GmshMesh<dim>      &coarse,
+                                     const Triangulation<dim> &tria)
+  {
+    GmshMesh<dim> result;
+    result.fracture_names = coarse.fracture_names;
+    std::set<unsigned int> seen;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        // A face of an active cell that has children (the neighbour is
+        // finer) is not a mesh face: its children are, seen from there.
+        if (face->manifold_id() != numbers::flat_manifold_id &&
+            !face->has_children() && seen.insert(face->index()).second)
+          {
+            AssertIndexRange(face->manifold_id(),
+                             coarse.fracture_elements.size());
+            auto element     = coarse.fracture_elements[face->manifold_id()];
+            element.vertices = face_loop<dim>(face);
+            result.fracture_elements.push_back(element);
+          }
+    return result;
+  }
+
+
+
   template GmshMesh<2>
   read_gmsh(const Parameters &, const unsigned int, Triangulation<2> &);
+  template GmshMesh<2>
+  fracture_elements_after_refinement(const GmshMesh<2> &,
+                                     const Triangulation<2> &);
+  template GmshMesh<3>
+  fracture_elements_after_refinement(const GmshMesh<3> &,
+                                     const Triangulation<3> &);
   template GmshMesh<3>
   read_gmsh(const Parameters &, const unsigned int, Triangulation<3> &);
 } // namespace PolyFrac

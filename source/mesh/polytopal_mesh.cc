@@ -38,49 +38,6 @@ namespace PolyFrac
       return result;
     }
 
-    /** Cyclic vertex loop of a face (hanging nodes on its edges included). */
-    template <int dim, typename FaceIterator>
-    std::vector<unsigned int>
-    face_loop(const FaceIterator &face)
-    {
-      if constexpr (dim == 2)
-        return {face->vertex_index(0), face->vertex_index(1)};
-      else
-        {
-          // deal.II numbers quad vertices lexicographically: loop 0, 1, 3, 2.
-          const std::vector<unsigned int> corners =
-            face->n_vertices() == 4 ?
-              std::vector<unsigned int>{face->vertex_index(0),
-                                        face->vertex_index(1),
-                                        face->vertex_index(3),
-                                        face->vertex_index(2)} :
-              std::vector<unsigned int>{face->vertex_index(0),
-                                        face->vertex_index(1),
-                                        face->vertex_index(2)};
-          std::vector<unsigned int> loop;
-          for (unsigned int i = 0; i < corners.size(); ++i)
-            {
-              const unsigned int a = corners[i];
-              const unsigned int b = corners[(i + 1) % corners.size()];
-              loop.push_back(a);
-              for (const unsigned int l : face->line_indices())
-                {
-                  const auto line = face->line(l);
-                  if ((line->vertex_index(0) == a &&
-                       line->vertex_index(1) == b) ||
-                      (line->vertex_index(0) == b &&
-                       line->vertex_index(1) == a))
-                    {
-                      const std::vector<unsigned int> inner =
-                        line_interior(line, a);
-                      loop.insert(loop.end(), inner.begin(), inner.end());
-                    }
-                }
-            }
-          return loop;
-        }
-    }
-
     /** The active face objects covering face @p f of @p cell. */
     template <typename FaceIterator>
     void
@@ -94,6 +51,49 @@ namespace PolyFrac
         out.push_back(face);
     }
   } // namespace
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  face_loop(const typename Triangulation<dim>::face_iterator &face)
+  {
+    if constexpr (dim == 2)
+      return {face->vertex_index(0), face->vertex_index(1)};
+    else
+      {
+        // deal.II numbers quad vertices lexicographically: loop 0, 1, 3, 2.
+        const std::vector<unsigned int> corners =
+          face->n_vertices() == 4 ?
+            std::vector<unsigned int>{face->vertex_index(0),
+                                      face->vertex_index(1),
+                                      face->vertex_index(3),
+                                      face->vertex_index(2)} :
+            std::vector<unsigned int>{face->vertex_index(0),
+                                      face->vertex_index(1),
+                                      face->vertex_index(2)};
+        std::vector<unsigned int> loop;
+        for (unsigned int i = 0; i < corners.size(); ++i)
+          {
+            const unsigned int a = corners[i];
+            const unsigned int b = corners[(i + 1) % corners.size()];
+            loop.push_back(a);
+            for (const unsigned int l : face->line_indices())
+              {
+                const auto line = face->line(l);
+                if ((line->vertex_index(0) == a &&
+                     line->vertex_index(1) == b) ||
+                    (line->vertex_index(0) == b && line->vertex_index(1) == a))
+                  {
+                    const std::vector<unsigned int> inner =
+                      line_interior(line, a);
+                    loop.insert(loop.end(), inner.begin(), inner.end());
+                  }
+              }
+          }
+        return loop;
+      }
+  }
 
 
 
@@ -278,6 +278,10 @@ namespace PolyFrac
 
 
 
+  template std::vector<unsigned int>
+  face_loop<2>(const Triangulation<2>::face_iterator &);
+  template std::vector<unsigned int>
+  face_loop<3>(const Triangulation<3>::face_iterator &);
   template class PolytopalMesh<2>;
   template class PolytopalMesh<3>;
 } // namespace PolyFrac

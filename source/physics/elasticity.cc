@@ -9,6 +9,8 @@
 #include <polyfrac/physics/elasticity.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -531,6 +533,102 @@ namespace PolyFrac
     const Tensor<2, dim> strain = 0.5 * (gradient + transpose(gradient));
     return 2 * prm.lame_mu * strain +
            prm.lame_lambda * trace(gradient) * unit_symmetric_tensor<dim>();
+  }
+
+
+
+  template <int dim>
+  Vector<float>
+  Elasticity<dim>::error_indicators(const MechanicalState<dim> &state) const
+  {
+    const auto        &mesh = geometry.mesh;
+    const unsigned int n    = mesh.n_cells();
+
+    // t_{K,σ}: the thickness of K across face σ, 2|K| over the measure of
+    // the faces of K parallel to σ (a box: the distance between the two
+    // faces, however finely a neighbour splits them).
+    const auto thickness = [&](const unsigned int K, const unsigned int face) {
+      double parallel = 0;
+      for (const unsigned int other : mesh.cells[K].faces)
+        if (std::abs(geometry.faces[other].normal *
+                     geometry.faces[face].normal) > 0.9)
+          parallel += geometry.faces[other].measure;
+      return 2 * geometry.cells[K].measure / parallel;
+    };
+
+    // The stress of each cell and the body-force term ρ_K² ‖f‖²_K, ρ_K the
+    // smallest thickness of K.
+    std::vector<Tensor<2, dim>> sigma(n);
+    std::vector<double>         eta2(n, 0.);
+    Vector<double>              f(dim);
+    for (unsigned int K = 0; K < n; ++K)
+      {
+        const LocalReconstruction<dim> local(geometry, dofs, network, K);
+        sigma[K]      = stress(local.gradient(state.local_values(dofs, K)));
+        double volume = 0;
+        for (const QuadraturePoint<dim> &q : geometry.quadrature(K))
+          {
+            body_force->vector_value(q.point, f);
+            volume += q.weight * f.norm_sqr();
+          }
+        double rho = std::numeric_limits<double>::max();
+        for (const unsigned int face : mesh.cells[K].faces)
+          rho = std::min(rho, thickness(K, face));
+        eta2[K] = rho * rho * volume;
+      }
+
+    // t_{K,σ} |σ| |residual|².
+    const auto face_term = [&](const unsigned int    K,
+                               const unsigned int    face,
+                               const Tensor<1, dim> &residual) {
+      return thickness(K, face) * geometry.faces[face].measure *
+             residual.norm_square();
+    };
+    std::vector<bool> fracture_face(mesh.n_faces(), false);
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const auto          &ff = network.fracture_faces[i];
+        const Point<dim>    &x  = geometry.faces[ff.face].centroid;
+        const Tensor<1, dim> exerted =
+          state.multipliers[i] + fracture_pressure->value(x) * ff.normal;
+        const Tensor<2, dim> sigma0 = initial_stress_value(x);
+        for (const unsigned int K : {ff.plus_cell, ff.minus_cell})
+          eta2[K] +=
+            face_term(K, ff.face, (sigma[K] + sigma0) * ff.normal + exerted);
+        fracture_face[ff.face] = true;
+      }
+
+    const auto    &neumann_ids = prm.boundary.neumann_ids;
+    Vector<double> g(dim);
+    for (unsigned int face = 0; face < mesh.n_faces(); ++face)
+      {
+        const auto           &cells  = mesh.faces[face].cells;
+        const Tensor<1, dim> &normal = geometry.faces[face].normal;
+        if (mesh.faces[face].at_boundary())
+          {
+            if (std::find(neumann_ids.begin(),
+                          neumann_ids.end(),
+                          mesh.faces[face].boundary_id) == neumann_ids.end())
+              continue;
+            neumann->vector_value(geometry.faces[face].centroid, g);
+            Tensor<1, dim> residual = sigma[cells[0]] * normal;
+            for (unsigned int d = 0; d < dim; ++d)
+              residual[d] -= g(d);
+            eta2[cells[0]] += face_term(cells[0], face, residual);
+          }
+        else if (!fracture_face[face])
+          {
+            const Tensor<1, dim> jump =
+              (sigma[cells[0]] - sigma[cells[1]]) * normal;
+            for (const unsigned int K : cells)
+              eta2[K] += 0.5 * face_term(K, face, jump);
+          }
+      }
+
+    Vector<float> eta(n);
+    for (unsigned int K = 0; K < n; ++K)
+      eta(K) = std::sqrt(eta2[K]);
+    return eta;
   }
 
 

@@ -2,6 +2,7 @@
 
 #include <polyfrac/postprocessing/convergence_table.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -41,17 +42,23 @@ namespace PolyFrac
   std::optional<double>
   observed_rate(const ConvergenceRow     &coarse,
                 const ConvergenceRow     &fine,
-                std::optional<ErrorValue> Errors::*const column)
+                std::optional<ErrorValue> Errors::*const column,
+                const RateReference                     &reference)
   {
     const auto &e_coarse = coarse.errors.*column;
     const auto &e_fine   = fine.errors.*column;
-    // Levels whose h differs by less than 0.1 % (e.g. a gmsh mesh that
-    // refinement leaves unchanged) have no meaningful rate.
+    // The ratio of the reference lengths h_{k-1}/h_k; levels whose ratio
+    // differs from 1 by less than 0.1 % (e.g. a gmsh mesh that refinement
+    // leaves unchanged) have no meaningful rate.
+    const double ratio =
+      reference.unknowns_dimension == 0 ?
+        coarse.h / fine.h :
+        std::pow(static_cast<double>(fine.n_dofs) / coarse.n_dofs,
+                 1. / reference.unknowns_dimension);
     if (!e_coarse || !e_fine || e_coarse->value <= 0 || e_fine->value <= 0 ||
-        std::abs(coarse.h / fine.h - 1) < 1e-3)
+        std::abs(ratio - 1) < 1e-3)
       return {};
-    return std::log(e_coarse->value / e_fine->value) /
-           std::log(coarse.h / fine.h);
+    return std::log(e_coarse->value / e_fine->value) / std::log(ratio);
   }
 
 
@@ -60,7 +67,8 @@ namespace PolyFrac
   write_convergence_table(std::ostream                      &out,
                           const std::vector<ConvergenceRow> &rows,
                           const bool                         with_rates,
-                          const bool                         csv)
+                          const bool                         csv,
+                          const RateReference               &reference)
   {
     if (csv)
       {
@@ -71,7 +79,8 @@ namespace PolyFrac
       return;
 
     // The rates are taken against 1/h: reduction_rate_log2 with dimension
-    // 1 gives log(e_{k-1}/e_k) / log((1/h_k)/(1/h_{k-1})), the order in h.
+    // 1 gives log(e_{k-1}/e_k) / log((1/h_k)/(1/h_{k-1})), the order in h;
+    // against n_dofs with dimension d, d log(e_{k-1}/e_k) / log(N_k/N_{k-1}).
     ConvergenceTable         table;
     std::vector<std::string> order = {"level", "h", "n_cells", "n_dofs"};
     for (const ConvergenceRow &row : rows)
@@ -100,7 +109,10 @@ namespace PolyFrac
         // An error that vanishes on some level has no order.
         if (with_rates && positive)
           table.evaluate_convergence_rates(
-            key, "1/h", ConvergenceTable::reduction_rate_log2, 1);
+            key,
+            reference.unknowns_dimension == 0 ? "1/h" : "n_dofs",
+            ConvergenceTable::reduction_rate_log2,
+            std::max(1u, reference.unknowns_dimension));
         order.push_back(key);
       }
     // The columns of `order` only: 1/h is left out.

@@ -4,6 +4,14 @@
 
 namespace PolyFrac
 {
+  RateReference
+  rate_reference(const Parameters &prm)
+  {
+    return {prm.mesh.refinement == "adaptive" ? prm.dim : 0};
+  }
+
+
+
   ConvergenceCheck
   check_convergence(const Parameters                  &prm,
                     const std::vector<ConvergenceRow> &rows)
@@ -41,12 +49,12 @@ namespace PolyFrac
               std::ostringstream sentence;
               sentence << "The rate of " << name << " between levels "
                        << rows[r - 1].level << " and " << rows[r].level;
-              const std::optional<double> rate =
-                observed_rate(rows[r - 1], rows[r], column);
+              const std::optional<double> rate = observed_rate(
+                rows[r - 1], rows[r], column, rate_reference(prm));
               if (!rate)
                 fail(sentence.str() +
                      " cannot be computed (no exact field, a zero error or "
-                     "the same h on both levels).");
+                     "the same h, or n_dofs, on both levels).");
               else if (!(*rate >= bound->second))
                 {
                   sentence << " is " << *rate << ", below the " << bound->second

@@ -423,6 +423,23 @@ CASES = {
          "= direct and is ignored"],
         files={"scene.prm": section("Linear solver", Smoother_sweeps="2")},
         status=0),
+    "adaptive_flow": case(
+        "`Mesh/Refinement = adaptive` with `Model = flow`",
+        ["subsection <Mesh>", "<Refinement = adaptive> needs an a posteriori "
+         "error indicator", "Model = flow needs <Refinement = uniform>"],
+        files={"scene.prm": FLOW + section("Mesh", Refinement="adaptive")}),
+    "adaptive_zero_fraction": case(
+        "`Mesh/Refinement = adaptive` with `Refined fraction = 0`",
+        ["subsection <Mesh>", "<Refinement = adaptive> needs <Refined "
+         "fraction> > 0"],
+        files={"scene.prm": section("Mesh", Refinement="adaptive",
+                                    Refined_fraction="0")}),
+    "refined_fraction_uniform": case(
+        "`Refined fraction = 0.5` with `Refinement = uniform`: a warning, runs",
+        ["Mesh/Refined fraction is not used by Mesh/Refinement = uniform and "
+         "is ignored"],
+        files={"scene.prm": section("Mesh", Refined_fraction="0.5")},
+        status=0),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
         ["<Lame mu> must be > 0, not 0.000000"],

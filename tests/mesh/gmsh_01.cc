@@ -2,7 +2,9 @@
 // fracture (a line in 2D, a planar quadrilateral in 3D) is meshed and
 // refined through the gmsh API; checks cells, boundary ids, the fracture
 // faces (count, n^+ from the node order, + side, covered measure) and the
-// node sides on levels 0 and 1. Orientation, side and measure are asserted.
+// node sides on levels 0 and 1, and on level 0 refined by deal.II (locally,
+// and by an adaptive cycle): the fracture elements follow the refinement.
+// Orientation, side and measure are asserted.
 
 #include <polyfrac/app/simulator.h>
 
@@ -31,17 +33,16 @@ namespace
 
   template <int dim>
   void
-  check_level(const Parameters     &prm,
-              const unsigned int    level,
-              const Tensor<1, dim> &exact_normal,
-              const double          exact_measure)
+  check_level(const LevelDiscretization<dim> &discretization,
+              const std::string              &name,
+              const Tensor<1, dim>           &exact_normal,
+              const double                    exact_measure)
   {
-    const LevelDiscretization<dim> discretization(prm, level);
-    const auto                    &mesh     = *discretization.mesh;
-    const auto                    &geometry = *discretization.geometry;
-    const auto                    &network  = *discretization.network;
+    const auto &mesh     = *discretization.mesh;
+    const auto &geometry = *discretization.geometry;
+    const auto &network  = *discretization.network;
 
-    std::cout << dim << "D level " << level << std::endl;
+    std::cout << dim << "D " << name << std::endl;
     std::cout
       << "n_cells: " << mesh.n_cells() << " (deal.II cells "
       << discretization.triangulation.n_active_cells() << ", "
@@ -114,7 +115,43 @@ namespace
     prm.mesh.file_name               = std::string(SOURCE_DIR) + "/" + geo;
     prm.fractures.gmsh_physical_tags = {10};
     for (unsigned int level = 0; level < 2; ++level)
-      check_level<dim>(prm, level, exact_normal, exact_measure);
+      check_level<dim>(LevelDiscretization<dim>(prm, level),
+                       "level " + std::to_string(level),
+                       exact_normal,
+                       exact_measure);
+
+    // Refined by deal.II, not gmsh: the children of the fracture faces
+    // carry their elements' manifold ids. Local refinement of the cells
+    // with centre in [0.5, 1]^dim (about half the fracture, so hanging
+    // nodes on it) and one adaptive cycle that refines the + cells of the
+    // fracture.
+    const unsigned int level_0_faces =
+      LevelDiscretization<dim>(prm, 0).network->n_fracture_faces();
+    prm.mesh.local_refinements = 1;
+    prm.mesh.box_lower         = Point<3>(0.5, 0.5, 0.5);
+    prm.mesh.box_upper         = Point<3>(1, 1, 1);
+    const LevelDiscretization<dim> local(prm, 0);
+    check_level<dim>(local,
+                     "level 0, refined by deal.II in [0.5, 1]^dim",
+                     exact_normal,
+                     exact_measure);
+    prm.mesh.local_refinements = 0;
+    prm.mesh.refinement        = "adaptive";
+    const LevelDiscretization<dim> coarse(prm, 0);
+    Vector<float>                  indicators(coarse.mesh->n_cells());
+    for (const auto &ff : coarse.network->fracture_faces)
+      indicators(ff.plus_cell) = 1;
+    // No more cells than the + cells (the others tie at 0).
+    prm.mesh.refined_fraction =
+      0.5 * coarse.network->n_fracture_faces() / coarse.mesh->n_cells();
+    const LevelDiscretization<dim> adapted(prm, coarse, indicators);
+    check_level<dim>(adapted,
+                     "level 0 after an adaptive cycle",
+                     exact_normal,
+                     exact_measure);
+    for (const auto *refined : {&local, &adapted})
+      AssertThrow(refined->network->n_fracture_faces() > level_0_faces,
+                  ExcMessage("Refinement by deal.II split no fracture face."));
   }
 } // namespace
 

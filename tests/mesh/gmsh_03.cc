@@ -98,14 +98,6 @@ main()
                  Triangulation<2> tria;
                  read_gmsh(prm, 0, tria);
                });
-  expect_error("local refinements",
-               "Local refinements > 0 is not supported",
-               [] {
-                 Parameters prm             = parameters(2, "gmsh_01.geo");
-                 prm.mesh.local_refinements = 1;
-                 Triangulation<2> tria;
-                 read_gmsh(prm, 0, tria);
-               });
   expect_error("not embedded", "Embed the fracture", [] {
     Parameters       prm = parameters(2, "gmsh_03_not_embedded.geo");
     Triangulation<2> tria;

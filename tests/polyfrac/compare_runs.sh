@@ -6,7 +6,10 @@
 #                        iterations and wall times may differ) to the
 #                        relative tolerance TOL, by numdiff;
 #   smaller=COLUMN:F     on every level, B's error COLUMN is at most F times
-#                        A's (e.g. B adds a stabilisation A lacks).
+#                        A's (e.g. B adds a stabilisation A lacks);
+#   cheaper=COLUMN       B's last level has a smaller error COLUMN than A's
+#                        last level with fewer unknowns (e.g. B refines
+#                        where the error is, A everywhere).
 # Exits non-zero, printing both tables, when the check fails.
 #
 # usage: compare_runs.sh POLYFRAC WORKDIR CHECK FILE.prm [--set A=B ...]
@@ -55,6 +58,21 @@ case $check in
           print "level " $1 ": " name " " $(c + n) " is not below " factor \
                 " x " $c; exit 1 }
         printf "level %d: %s %s <= %s x %s\n", $1, name, $(c + n), factor, $c }' ||
+      fail "The check $check fails."
+    ;;
+  cheaper=*)
+    column=${check#cheaper=}
+    { head -1 "$a"; tail -1 "$a"; tail -1 "$b"; } | awk -F, -v name="$column" '
+      NR == 1 { for (i = 1; i <= NF; ++i) { if ($i == name) c = i
+                                             if ($i == "n_dofs") n = i }
+                if (!c) { print "no column " name; exit 1 }
+                next }
+      NR == 2 { ea = $c; na = $n; next }
+      { if (ea == "" || $c == "" || !($c < ea) || !($n < na)) {
+          print "B ends at " name " " $c " with " $n " unknowns, A at " ea \
+                " with " na; exit 1 }
+        printf "B: %s %s with %d unknowns < A: %s with %d\n", name, $c, $n,
+               ea, na }' ||
       fail "The check $check fails."
     ;;
   *) echo "unknown check $check"; exit 2 ;;

@@ -3,9 +3,12 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/gmsh_reader.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
@@ -21,6 +24,11 @@ namespace PolyFrac
    * parameters in the order of the mesh pipeline (MeshBuilder): deal.II
    * triangulation, polytopal view, distortion, agglomeration, geometry,
    * fracture network, DoF map.
+   *
+   * A level is either made from the parameters (level 0, and every level
+   * of Mesh/Refinement = uniform) or, for Mesh/Refinement = adaptive, by
+   * refining the triangulation of the level before where its model's error
+   * indicators are largest; the rest of the pipeline is the same.
    */
   template <int dim>
   class LevelDiscretization
@@ -29,6 +37,21 @@ namespace PolyFrac
     /** Builds the mesh of refinement level @p level of the scene of @p prm
      * and everything on it, in the order of the members below. */
     LevelDiscretization(const Parameters &prm, const unsigned int level);
+
+    /**
+     * The next cycle of Mesh/Refinement = adaptive: a copy of the
+     * triangulation of @p coarser, whose cells with the largest indicators
+     * η_K (@p indicators, one per polytope of @p coarser,
+     * Model::error_indicators()) are refined once, the fraction Mesh/Refined
+     * fraction of them (GridRefinement::refine_and_coarsen_fixed_number; the
+     * cells of an agglomerate share its indicator, divided by the square
+     * root of their number). Its fractures are those of @p coarser: planar
+     * fractures are located again, gmsh fracture elements followed through
+     * the refinement.
+     */
+    LevelDiscretization(const Parameters          &prm,
+                        const LevelDiscretization &coarser,
+                        const Vector<float>       &indicators);
 
     /** Prints cells, faces, node sides, fractures and the mesh quality. */
     void
@@ -44,6 +67,21 @@ namespace PolyFrac
     std::unique_ptr<FractureNetwork<dim>> network;
     /** The node sides and bubbles of #mesh cut by #network. */
     std::unique_ptr<DoFMap<dim>> dofs;
+
+  private:
+    /**
+     * The pipeline after the triangulation: polytopal view, distortion,
+     * agglomeration, geometry, fracture network (of the planar fractures of
+     * @p prm, or of the gmsh fracture elements of @p gmsh_elements), DoFs.
+     */
+    void
+    build_on_triangulation(const Parameters    &prm,
+                           const GmshMesh<dim> &gmsh_elements);
+
+    /** The gmsh mesh as read (its fracture elements are the manifold ids of
+     * #triangulation's fracture faces), shared by the adaptive cycles;
+     * empty for a generated box. */
+    std::shared_ptr<const GmshMesh<dim>> gmsh_as_read;
   };
 } // namespace PolyFrac
 

@@ -46,6 +46,10 @@ namespace PolyFrac
     Errors
     errors(const double t) const override;
 
+    /** Elasticity::error_indicators() of the state. */
+    Vector<float>
+    error_indicators() const override;
+
     PatchData<dim, dim>
     matrix_output() const override;
 
@@ -111,6 +115,10 @@ namespace PolyFrac
 
     Errors
     errors(const double t) const override;
+
+    /** Elasticity::error_indicators() of the state. */
+    Vector<float>
+    error_indicators() const override;
 
     PatchData<dim, dim>
     matrix_output() const override;

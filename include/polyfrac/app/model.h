@@ -3,6 +3,8 @@
 
 #include <deal.II/base/types.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
@@ -112,6 +114,15 @@ namespace PolyFrac
     virtual Errors
     errors(const double t) const = 0;
 
+    /**
+     * The a posteriori error indicator η_K of the current state on each
+     * polytope, which drives Mesh/Refinement = adaptive (doc/scheme.md §9).
+     * The default is empty: the model has none, and the parameters refuse
+     * adaptive refinement for it.
+     */
+    virtual Vector<float>
+    error_indicators() const;
+
     /** The matrix output of the current state: one patch per deal.II cell. */
     virtual PatchData<dim, dim>
     matrix_output() const = 0;
@@ -143,6 +154,15 @@ namespace PolyFrac
   inline void
   Model<dim>::print_step_summary(std::ostream &) const
   {}
+
+
+
+  template <int dim>
+  inline Vector<float>
+  Model<dim>::error_indicators() const
+  {
+    return {};
+  }
 } // namespace PolyFrac
 
 #endif

@@ -35,6 +35,12 @@ namespace PolyFrac
    * the table of wall times per section (`Output/Print timings`) and the
    * line naming the files written; stops with an error when a check of the
    * convergence study (Maximum errors, Minimum rates) fails.
+   *
+   * With Mesh/Refinement = adaptive, the levels are the cycles of an
+   * adaptive loop (solve, estimate, mark, refine): each level after the
+   * first refines the mesh of the one before where its model's error
+   * indicators (Model::error_indicators()) are largest, and the observed
+   * rates are taken against n_dofs^(1/dim).
    */
   template <int dim>
   class Simulator
@@ -90,6 +96,11 @@ namespace PolyFrac
     std::vector<std::string> written_files;
     /** What the model of the last level handed over (nested iteration). */
     std::shared_ptr<const LevelStart> coarser;
+    /** Mesh/Refinement = adaptive: the discretisation of the last level and
+     * its model's error indicators, from which the next level is refined. */
+    std::unique_ptr<const LevelDiscretization<dim>> coarser_discretization;
+    /** The error indicators of #coarser_discretization. */
+    Vector<float> coarser_indicators;
   };
 } // namespace PolyFrac
 

@@ -114,6 +114,11 @@ namespace PolyFrac
       std::vector<unsigned int> subdivisions;
       /** Global refinements of level 0 (level k refines k more times). */
       unsigned int global_refinements;
+      /** Refinement: uniform | adaptive (how level k > 0 is made). */
+      std::string refinement;
+      /** Refined fraction: the fraction of the cells an adaptive cycle
+       * refines. */
+      double refined_fraction;
       /** Lower corner of the Local refinement box. */
       Point<3> box_lower;
       /** Upper corner of the Local refinement box. */

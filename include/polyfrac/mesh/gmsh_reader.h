@@ -78,8 +78,13 @@ namespace PolyFrac
    * a fracture element is not made of cell vertices (fracture not
    * embedded in the mesh: `Curve{..} In Surface{..}` /
    * `Surface{..} In Volume{..}`); a non-fracture (dim-1) physical group
-   * has an element inside the domain; `Local refinements` > 0 (refine in
-   * the `.geo` instead); PolyFrac built without the gmsh API.
+   * has an element inside the domain; PolyFrac built without the gmsh API.
+   *
+   * Each face of @p tria that is a fracture element gets the element's
+   * index in GmshMesh::fracture_elements as manifold id, which deal.II's
+   * refinement passes on to the children of the face: after local or
+   * adaptive refinement, fracture_elements_after_refinement() lists the
+   * fracture elements of the refined mesh.
    *
    * @code
    *   Triangulation<2>     tria;
@@ -94,6 +99,18 @@ namespace PolyFrac
   read_gmsh(const Parameters   &prm,
             const unsigned int  n_refinements,
             Triangulation<dim> &tria);
+
+  /**
+   * The fracture elements of @p tria, a refinement by deal.II of the
+   * triangulation that read_gmsh() filled and returned @p coarse for: the
+   * active faces whose manifold id names an element of @p coarse, each with
+   * that element's fracture and n^+ (the children of a planar element share
+   * its plane) and its own vertices.
+   */
+  template <int dim>
+  GmshMesh<dim>
+  fracture_elements_after_refinement(const GmshMesh<dim>      &coarse,
+                                     const Triangulation<dim> &tria);
 } // namespace PolyFrac
 
 #endif

@@ -14,6 +14,17 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
+   * The cyclic vertex loop of a face of a triangulation, with the hanging
+   * nodes on its edges (3D: a finer neighbour across an edge splits it): the
+   * vertices of the polytopal face it becomes.
+   */
+  template <int dim>
+  std::vector<unsigned int>
+  face_loop(const typename Triangulation<dim>::face_iterator &face);
+
+
+
+  /**
    * A polytopal view of a deal.II mesh: cells are polygons (2D) or
    * polyhedra (3D) given by their faces, faces are segments (2D) or
    * closed vertex loops (3D, possibly non-planar: see FaceGeometry for the

@@ -102,6 +102,31 @@ namespace PolyFrac
     Tensor<2, dim>
     stress(const Tensor<2, dim> &gradient) const;
 
+    /**
+     * The residual error indicator η_K of @p state on each polytope K
+     * (doc/scheme.md §9), with σ_K the stress of the cell gradient ∇^K u,
+     * σ0 the in-situ stress, n_σ a unit normal of face σ, t_{K,σ} the
+     * thickness of K across σ (2|K| over the measure of its faces parallel
+     * to σ) and ρ_K the smallest of them:
+     *
+     *   η_K² = ρ_K² ‖f‖²_K
+     *        + Σ_{σ interior, not a fracture face} t_{K,σ} |σ| |(σ_K − σ_L)
+     * n_σ|² / 2
+     *        + Σ_{σ Neumann} t_{K,σ} |σ| |σ_K n_σ − g_N(x̄_σ)|²
+     *        + Σ_{σ fracture face} t_{K,σ} |σ| |(σ_K + σ0(x̄_σ)) n^+ + λ_σ
+     *                                         + p_f(x̄_σ) n^+|²:
+     *
+     * the body force that the cell-wise constant stress cannot balance,
+     * the jumps of the traction between cells (shared by the two cells),
+     * the mismatch with the Neumann traction and, on either side of a
+     * fracture face, with the traction −λ_σ − p_f n^+ that the multiplier
+     * and the fluid pressure exert (T^+ = σ n^+ = −λ on the exact solution).
+     * The contact conditions themselves hold face by face once Newton has
+     * converged, so they add nothing. Dirichlet faces add nothing.
+     */
+    Vector<float>
+    error_indicators(const MechanicalState<dim> &state) const;
+
     /** The prescribed traction λ(x̄_σ) (Fractures/Traction) on fracture
      * face @p i. */
     Tensor<1, dim>

@@ -22,6 +22,11 @@ namespace PolyFrac
     std::vector<std::string> failures;
   };
 
+  /** The reference of the observed orders of the scene of @p prm: n_dofs
+   * for Mesh/Refinement = adaptive, 1/h otherwise. */
+  RateReference
+  rate_reference(const Parameters &prm);
+
   /**
    * Checks every level of @p rows against Parameters::checks: each listed
    * error at most its bound on every level, each listed rate reached
