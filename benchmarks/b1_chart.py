@@ -24,13 +24,12 @@ import argparse
 import csv
 import os
 import re
-import statistics
-import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import b1_profile  # noqa: E402
+import speed_accuracy  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PRM = os.path.join(ROOT, "prm", "b1-inclined-crack.prm")
@@ -61,27 +60,12 @@ def run(program, output, settings, levels, runs):
     """Runs the scene with `levels` levels `runs` times; returns the median
     wall (s), the median peak memory (MB), the unknowns and the errors of
     the last level of the last run."""
-    walls, memories = [], []
-    for _ in range(runs):
-        command = ["/usr/bin/time", "-f", "%e %M", program, PRM,
-                   "--set", "Output/Output directory=%s" % output,
-                   "--set", "Output/Print timings=false",
-                   "--set", "Convergence study/Number of refinement levels=%d"
-                   % levels]
-        for entry, value in settings:
-            command += ["--set", "%s=%s" % (entry, value)]
-        result = subprocess.run(command, capture_output=True, text=True)
-        if result.returncode != 0:
-            sys.exit("B1 run failed: %s\n%s%s" % (" ".join(command),
-                                                  result.stdout[-2000:],
-                                                  result.stderr[-2000:]))
-        wall, memory = result.stderr.strip().splitlines()[-1].split()
-        walls.append(float(wall))
-        memories.append(float(memory) / 1024)
+    wall, memory = speed_accuracy.timed_run(program, PRM, output, levels,
+                                            settings, runs)
     with open(os.path.join(output, "convergence.csv")) as table:
         unknowns = int(list(csv.DictReader(table))[-1]["n_dofs"])
     errors = b1_profile.errors(b1_profile.read(output, levels - 1))
-    return statistics.median(walls), statistics.median(memories), unknowns, errors
+    return wall, memory, unknowns, errors
 
 
 def variants(directory):
@@ -114,45 +98,18 @@ def variants(directory):
 
 
 def chart(rows, png):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(2, 2, figsize=(12, 9))
-    names = []
-    for row in rows:
-        if row["variant"] not in names:
-            names.append(row["variant"])
-    for name in names:
-        points = [row for row in rows if row["variant"] == name]
-        peer = points[0]["code"] != "PolyFrac"
-        style = dict(marker="s" if peer else "o", ms=5,
-                     linestyle="none" if peer else "-")
-        for i, error in enumerate(("slip_error", "lambda_n_error")):
-            for j, axis in enumerate(("wall_s", "unknowns")):
-                ax = axes[i][j]
-                ax.loglog([p[axis] for p in points],
-                          [100 * max(p[error], 1e-4) for p in points],
-                          label=name, **style)
-                for p in points:
-                    ax.annotate(p["label"], (p[axis], 100 * max(p[error], 1e-4)),
-                                fontsize=5, xytext=(3, 2),
-                                textcoords="offset points")
-    for i, error in enumerate(("slip L2 error (%)",
-                               "lambda_n L2 error, whole crack (%)")):
-        for j, axis in enumerate(("wall (s), median", "unknowns")):
-            axes[i][j].set_xlabel(axis)
-            axes[i][j].set_ylabel(error)
-            axes[i][j].grid(True, which="both", alpha=0.3)
-    axes[0][0].axhline(1, color="grey", lw=0.8)
-    axes[1][0].axhline(2, color="grey", lw=0.8)
-    axes[0][0].axvline(1.5, color="grey", lw=0.8)
-    axes[0][1].legend(fontsize=7)
-    fig.suptitle("B1 (inclined crack, Coulomb): accuracy against wall time and "
-                 "unknowns, this machine\n(grey: the goal, slip 1 %, "
-                 "lambda_n 2 %, 1.5 s; labels: crack cell size, grading or "
-                 "adaptive cycles)")
-    fig.tight_layout()
-    fig.savefig(png, dpi=100)
+    speed_accuracy.chart(
+        rows, (("slip_error", "slip L2 error (%)"),
+               ("lambda_n_error", "lambda_n L2 error, whole crack (%)")),
+        png,
+        "B1 (inclined crack, Coulomb): accuracy against wall time and "
+        "unknowns, this machine\n(grey: the goal, slip 1 %, lambda_n 2 %, "
+        "1.5 s; labels: crack cell size, grading or adaptive cycles)",
+        scale=100,
+        style=lambda row: dict(marker="s" if row["code"] != "PolyFrac" else "o",
+                               ms=5, linestyle="none"
+                               if row["code"] != "PolyFrac" else "-"),
+        goals=((0, 0, "h", 1), (1, 0, "h", 2), (0, 0, "v", 1.5)))
 
 
 def main():
@@ -186,10 +143,7 @@ def main():
                          open_faces=""))
     print("load after: %s" % open("/proc/loadavg").read().strip())
     table = os.path.join(ROOT, "benchmarks", "b1-chart.csv")
-    with open(table, "w", newline="") as out:
-        writer = csv.DictWriter(out, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
+    speed_accuracy.write_csv(rows, table)
     png = os.path.join(ROOT, "benchmarks", "b1-chart.png")
     chart(rows, png)
     print("wrote %s and %s" % (table, png))
