@@ -6,6 +6,8 @@
 #include <polyfrac/contact/face_condensation.h>
 #include <polyfrac/physics/amg_solver.h>
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -37,7 +39,13 @@ namespace PolyFrac
         AssertThrow(dirichlet.count(dofs.bubble_dof(i, c)) == 0,
                     ExcMessage("Face condensation needs the bubbles "
                                "(Contact/Bubbles = true)."));
+    // The peak memory of a run is the high-water mark of its resident set,
+    // and glibc keeps freed heap pages resident: hand back those of the
+    // assembly before the pattern is built, and those of the pattern's
+    // DynamicSparsityPattern after (benchmarks/README.md, "Memory budget").
+    malloc_trim(0);
     make_reduced_pattern();
+    malloc_trim(0);
   }
 
 
@@ -382,7 +390,9 @@ namespace PolyFrac
   {
     const types::global_dof_index n_u          = dofs.n_displacement_dofs();
     const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
-    SparseMatrix<double>          reduced(reduced_pattern);
+    // The matrix shares the index arrays of reduced_pattern (an Epetra
+    // graph is reference counted): only its values are new.
+    matrix.reinit(reduced_pattern);
 
     // D A D, a row at a time (columns sorted: A stores its diagonal first).
     std::vector<types::global_dof_index> columns;
@@ -403,7 +413,7 @@ namespace PolyFrac
                               entry->value());
                 columns.insert(at, entry->column());
               }
-          reduced.add(
+          matrix.add(
             row, columns.size(), columns.data(), values.data(), false, true);
         }
 
@@ -440,22 +450,22 @@ namespace PolyFrac
         for (const auto &[x, row] : K)
           if (x < first_bubble)
             {
-              reduced.add(
+              matrix.add(
                 x, stencil.size(), stencil.data(), row.begin(), false, true);
               for (unsigned int s = 0; s < stencil.size(); ++s)
-                reduced.add(stencil[s], x, row(s));
+                matrix.add(stencil[s], x, row(s));
             }
           else
             for (auto entry = elimination.begin(x); entry != elimination.end(x);
                  ++entry)
               {
                 scaled.equ(entry->value(), row);
-                reduced.add(entry->column(),
-                            stencil.size(),
-                            stencil.data(),
-                            scaled.begin(),
-                            false,
-                            true);
+                matrix.add(entry->column(),
+                           stencil.size(),
+                           stencil.data(),
+                           scaled.begin(),
+                           false,
+                           true);
               }
       }
 
@@ -465,12 +475,14 @@ namespace PolyFrac
     for (unsigned int i = 0; i < faces.size(); ++i)
       for (const unsigned int t : rows[i].traction)
         reduced_dof[dofs.bubble_dof(i, t)] = true;
+    matrix.compress(VectorOperation::add);
     double diagonal_scale = 0;
     for (types::global_dof_index row = 0; row < n_u; ++row)
-      diagonal_scale += std::abs(reduced.diag_element(row)) / n_u;
+      diagonal_scale += std::abs(matrix.diag_element(row)) / n_u;
     for (types::global_dof_index row = 0; row < n_u; ++row)
       if (!reduced_dof[row])
-        reduced.set(row, row, diagonal_scale);
+        matrix.set(row, row, diagonal_scale);
+    matrix.compress(VectorOperation::insert);
 
     // Σ |σ| E on the jump variables.
     for (unsigned int i = 0; i < faces.size(); ++i)
@@ -479,9 +491,9 @@ namespace PolyFrac
         for (unsigned int a = 0; a < T.size(); ++a)
           for (unsigned int b = 0; b < T.size(); ++b)
             if (rows[i].E(a, b) != 0.)
-              reduced.add(dofs.bubble_dof(i, T[a]),
-                          dofs.bubble_dof(i, T[b]),
-                          faces[i].measure * rows[i].E(a, b));
+              matrix.add(dofs.bubble_dof(i, T[a]),
+                         dofs.bubble_dof(i, T[b]),
+                         faces[i].measure * rows[i].E(a, b));
       }
 
     // The coupling −(1/w_b) (G^T C_k)(Z^T A q_k)^T of the Coulomb slip faces.
@@ -495,9 +507,9 @@ namespace PolyFrac
                 reduced_functional(bubble_momentum(faces[i], i, k));
               for (const auto &[row, u] : traction)
                 for (const auto &[column, v] : momentum)
-                  reduced.add(row, column, -u * v / bubble_weight(i));
+                  matrix.add(row, column, -u * v / bubble_weight(i));
             }
-    matrix.reinit(reduced, 0.); // no (absolute) drop tolerance
+    matrix.compress(VectorOperation::add);
   }
 
 
@@ -542,8 +554,23 @@ namespace PolyFrac
       rows.push_back(local_rows(face));
     Vector<double> offset;
     make_elimination(faces, rows, offset);
+
+    // The AMG is built anew only when some face's rows change kind (a
+    // state change); between, the operator changes only through the slip
+    // directions, and the AMG of the last new structure (and the operator
+    // it was built on, which ML keeps using) preconditions it. An AMG that
+    // will be replaced is freed, with its operator, before the new operator
+    // is built, and the heap pages freed since the last step are handed
+    // back (see the constructor).
+    const std::vector<bool> structure = row_structure(rows);
+    const bool              new_amg   = !amg || structure != amg_structure;
+    if (new_amg)
+      {
+        amg.reset();
+        amg_matrix.reset();
+      }
+    malloc_trim(0);
     TrilinosWrappers::SparseMatrix matrix;
-    const std::vector<bool>        structure = row_structure(rows);
     make_reduced_operator(faces, rows, matrix);
 
     // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
@@ -585,20 +612,15 @@ namespace PolyFrac
     rhs *= -1.;
     rhs += coupling_rhs;
 
-    // The AMG is built anew only when some face's rows change kind (a
-    // state change); between, the operator changes only through the slip
-    // directions, and the AMG of the last new structure (and the operator
-    // it was built on, which ML keeps using) preconditions it.
-    const bool new_amg = !amg || structure != amg_structure;
     if (new_amg)
       {
-        amg.reset();
         amg_matrix =
           std::make_unique<TrilinosWrappers::SparseMatrix>(std::move(matrix));
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
         initialize_amg(
           *amg, *amg_matrix, dofs, vertices, solver.smoother_sweeps);
         amg_structure = structure;
+        malloc_trim(0); // ML's set-up products
       }
     Vector<double> y(n_u);
     KrylovSolve    krylov{symmetric ? "CG" : "GMRES", 0, true};

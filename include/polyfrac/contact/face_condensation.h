@@ -8,6 +8,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
@@ -216,9 +217,11 @@ namespace PolyFrac
      * Z is the identity D on the free node-side dofs and has nontrivial
      * rows W on the bubbles only, so Z^T A Z = D A D + D A W + (D A W)^T +
      * W^T A W: A is copied once, and the three corrections are sums over
-     * the rows of A on the bubbles (A is symmetric), face by face. Entries
-     * that are zero for the current row structure stay in the Trilinos
-     * matrix as explicit zeros (about 1 % of its entries).
+     * the rows of A on the bubbles (A is symmetric), face by face. They
+     * are summed straight into the Trilinos matrix, on reduced_pattern:
+     * no deal.II copy of the operator is made. Entries that are zero for
+     * the current row structure stay in it as explicit zeros (about 1 % of
+     * its entries).
      */
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
@@ -250,8 +253,11 @@ namespace PolyFrac
     /** face_stencil() of every face. */
     std::vector<std::vector<types::global_dof_index>> stencils;
 
-    /** The pattern of the reduced operator (make_reduced_pattern()). */
-    SparsityPattern reduced_pattern;
+    /**
+     * The pattern of the reduced operator (make_reduced_pattern()), as an
+     * Epetra graph: the operators built on it share its index arrays.
+     */
+    TrilinosWrappers::SparsityPattern reduced_pattern;
 
     /** Dofs that are neither fixed nor bubbles. */
     std::vector<bool> free_nodal;
