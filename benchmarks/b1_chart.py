@@ -20,7 +20,6 @@ Variants (benchmarks/B1.md, "The tip"):
 usage: benchmarks/b1_chart.py [--runs N] [--program build/polyfrac]
 writes benchmarks/b1-chart.csv and benchmarks/b1-chart.png (needs Debian's
 python3-numpy, python3-meshio and python3-matplotlib)."""
-import argparse
 import csv
 import os
 import re
@@ -113,12 +112,7 @@ def chart(rows, png):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--program", default=os.path.join(ROOT, "build",
-                                                          "polyfrac"))
-    args = parser.parse_args()
-    print("load before: %s" % open("/proc/loadavg").read().strip())
+    args = speed_accuracy.arguments(__doc__.split("\n\n")[0], ROOT)
     rows = []
     with tempfile.TemporaryDirectory() as directory:
         for name, strategy, settings, levels in variants(directory):

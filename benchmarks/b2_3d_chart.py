@@ -17,7 +17,6 @@ singular: benchmarks/STABILITY.md), so that variant is not charted here.
 usage: benchmarks/b2_3d_chart.py [--runs N] [--program build/polyfrac]
 writes benchmarks/b2-3d-chart.csv and benchmarks/b2-3d-chart.png (needs
 Debian's python3-matplotlib)."""
-import argparse
 import csv
 import os
 import sys
@@ -65,12 +64,7 @@ def run(program, output, settings, levels, runs):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--program", default=os.path.join(ROOT, "build",
-                                                          "polyfrac"))
-    args = parser.parse_args()
-    print("load before: %s" % open("/proc/loadavg").read().strip())
+    args = speed_accuracy.arguments(__doc__.split("\n\n")[0], ROOT)
     rows = []
     with tempfile.TemporaryDirectory() as directory:
         for name, pattern, settings, level_counts in variants():

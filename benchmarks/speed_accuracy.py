@@ -2,10 +2,25 @@
 of PolyFrac (median wall and peak memory of several runs, from
 /usr/bin/time), the CSV of the points and the log-log chart of errors
 against the wall time and against the unknowns, one line per variant."""
+import argparse
 import csv
+import os
 import statistics
 import subprocess
 import sys
+
+
+def arguments(description, root):
+    """The command line of a chart script (--runs, --program); prints the
+    machine's load before the runs."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--runs", type=int, default=3,
+                        help="runs per point (the wall is their median)")
+    parser.add_argument("--program",
+                        default=os.path.join(root, "build", "polyfrac"))
+    args = parser.parse_args()
+    print("load before: %s" % open("/proc/loadavg").read().strip())
+    return args
 
 
 def timed_run(program, prm, output, levels, settings, runs):
