@@ -286,12 +286,8 @@ namespace PolyFrac
       c.distribute_local_to_global(b, face_dofs, system_rhs);
     };
 
-    const auto &neumann_ids = prm.boundary.neumann_ids;
     for (unsigned int f = 0; f < mesh.n_faces(); ++f)
-      if (mesh.faces[f].at_boundary() &&
-          std::find(neumann_ids.begin(),
-                    neumann_ids.end(),
-                    mesh.faces[f].boundary_id) != neumann_ids.end())
+      if (on_neumann_boundary(f))
         {
           Vector<double> g(dim);
           neumann->vector_value(geometry.faces[f].centroid, g);
@@ -417,6 +413,19 @@ namespace PolyFrac
     const unsigned int f = network.fracture_faces[i].face;
     return -(initial_stress_value(geometry.faces[f].centroid) *
              network.normal(i));
+  }
+
+
+
+  template <int dim>
+  bool
+  Elasticity<dim>::on_neumann_boundary(const unsigned int face) const
+  {
+    const auto &ids = prm.boundary.neumann_ids;
+    return geometry.mesh.faces[face].at_boundary() &&
+           std::find(ids.begin(),
+                     ids.end(),
+                     geometry.mesh.faces[face].boundary_id) != ids.end();
   }
 
 
@@ -598,25 +607,20 @@ namespace PolyFrac
         fracture_face[ff.face] = true;
       }
 
-    const auto    &neumann_ids = prm.boundary.neumann_ids;
     Vector<double> g(dim);
     for (unsigned int face = 0; face < mesh.n_faces(); ++face)
       {
         const auto           &cells  = mesh.faces[face].cells;
         const Tensor<1, dim> &normal = geometry.faces[face].normal;
-        if (mesh.faces[face].at_boundary())
+        if (on_neumann_boundary(face))
           {
-            if (std::find(neumann_ids.begin(),
-                          neumann_ids.end(),
-                          mesh.faces[face].boundary_id) == neumann_ids.end())
-              continue;
             neumann->vector_value(geometry.faces[face].centroid, g);
             Tensor<1, dim> residual = sigma[cells[0]] * normal;
             for (unsigned int d = 0; d < dim; ++d)
               residual[d] -= g(d);
             eta2[cells[0]] += face_term(cells[0], face, residual);
           }
-        else if (!fracture_face[face])
+        else if (!mesh.faces[face].at_boundary() && !fracture_face[face])
           {
             const Tensor<1, dim> jump =
               (sigma[cells[0]] - sigma[cells[1]]) * normal;

@@ -3,10 +3,11 @@
 // hexahedra and simplices:
 //
 // - patch test: an affine displacement with a fracture with tips, loaded by
-//   the traction λ = −σ n^+ of that field (Fractures/Traction), is computed
-//   exactly, so every η_K vanishes to round-off. This checks the signs of
-//   the fracture term (λ against σ n^+, both sides): with either sign
-//   wrong the traction mismatch on the fracture faces is 2 |σ n^+|.
+//   the traction λ = −σ n^+ of that field (Fractures/Traction) and by its
+//   traction σ e_x on the Neumann face x = 1, is computed exactly, so every
+//   η_K vanishes to round-off. This checks the signs of the fracture term
+//   (λ against σ n^+, both sides) and of the Neumann term: with a sign
+//   wrong the mismatch is 2 |σ n|.
 // - a smooth displacement without body force (u = (x² − y², −2xy, 0):
 //   tr ε = 0, div σ = 0) and without fractures, so that η is made of the
 //   traction jumps between cells alone: the global η = (Σ_K η_K²)^{1/2}
@@ -68,6 +69,12 @@ namespace
       }
     prm.boundary.dirichlet_expression = displacement;
     prm.body_force                    = dim == 2 ? "0; 0" : "0; 0; 0";
+    // The face x = 1 (boundary id 1) carries the traction σ e_x instead.
+    prm.boundary.neumann_ids = {1};
+    prm.boundary.neumann_traction.clear();
+    for (unsigned int d = 0; d < dim; ++d)
+      prm.boundary.neumann_traction +=
+        (d == 0 ? "" : "; ") + std::to_string(sigma[d][0]);
     {
       const LevelDiscretization<dim> discretization(prm, 0);
       const Tensor<1, dim>           traction =
@@ -89,6 +96,7 @@ namespace
     }
 
     // Order 1 on a smooth solution without fractures.
+    prm.boundary.neumann_ids.clear();
     prm.fractures.geometries.clear();
     prm.fractures.traction = dim == 2 ? "0; 0" : "0; 0; 0";
     prm.boundary.dirichlet_expression =

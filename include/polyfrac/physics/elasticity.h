@@ -180,6 +180,11 @@ namespace PolyFrac
     FullMatrix<double>
     local_stiffness(const LocalReconstruction<dim> &local) const;
 
+    /** Whether face @p face lies on the boundary with a Neumann boundary
+     * id (Boundary conditions/Neumann boundary ids). */
+    bool
+    on_neumann_boundary(const unsigned int face) const;
+
     /** ∫_K f·Π^K v − |K| σ0:ε_K(v) for the local unknowns of @p local, on
      * cell @p cell, with the body force @p force and the in-situ stress
      * @p stress (the members, or a thread's own copies). */
