@@ -758,6 +758,8 @@ namespace PolyFrac
       "relative complementarity residual, or below Tolerance/10, whichever "
       "is larger (inexact Newton: no accuracy is spent on a linearisation "
       "whose active set is still wrong; the momentum equation is linear). "
+      "The start step on the previous level's states stops at η² relative "
+      "to the load. "
       "0: every step to Tolerance/10 (benchmarks/README.md, \"Inexact "
       "Newton steps\").");
     prm.leave_subsection();
@@ -767,7 +769,9 @@ namespace PolyFrac
                       "direct",
                       Patterns::Selection("direct|AMG"),
                       "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
-                      "with the rigid-body modes.");
+                      "(smoothed aggregation with the rigid-body modes for "
+                      "elasticity; plain aggregation with the translations "
+                      "for the condensed contact steps, CG or GMRES).");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0),

@@ -617,8 +617,12 @@ namespace PolyFrac
         amg_matrix =
           std::make_unique<TrilinosWrappers::SparseMatrix>(std::move(matrix));
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        initialize_amg(
-          *amg, *amg_matrix, dofs, vertices, solver.smoother_sweeps);
+        initialize_amg(*amg,
+                       *amg_matrix,
+                       dofs,
+                       vertices,
+                       solver.smoother_sweeps,
+                       AMGHierarchy::lean);
         amg_structure = structure;
         malloc_trim(0); // ML's set-up products
       }

@@ -90,7 +90,8 @@ namespace PolyFrac
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const DoFMap<dim>                    &dofs,
                  const std::vector<Point<dim>>        &vertices,
-                 const unsigned int                    smoother_sweeps)
+                 const unsigned int                    smoother_sweeps,
+                 const AMGHierarchy                    hierarchy)
   {
     // AdditionalData has no room for rotations in deal.II 9.4: let it fill
     // the ML list (smoother, aggregation) with no constant modes, then
@@ -112,9 +113,18 @@ namespace PolyFrac
     data.set_parameters(parameters, modes, matrix.trilinos_matrix());
     modes = rigid_body_modes(dofs, vertices, matrix.trilinos_matrix());
     parameters.set("null space: type", "pre-computed");
-    parameters.set("null space: dimension", modes->NumVectors());
+    // The translations are the first dim vectors of the column-major
+    // multivector.
+    parameters.set("null space: dimension",
+                   hierarchy == AMGHierarchy::lean ? static_cast<int>(dim) :
+                                                     modes->NumVectors());
     parameters.set("null space: vectors", modes->Values());
     parameters.set("PDE equations", static_cast<int>(dim));
+    if (hierarchy == AMGHierarchy::lean)
+      {
+        parameters.set("aggregation: damping factor", 0.);
+        parameters.set("aggregation: type", "MIS");
+      }
     amg.initialize(matrix, parameters);
   }
 
@@ -160,7 +170,12 @@ namespace PolyFrac
                const Parameters::SolverData         &solver)
   {
     TrilinosWrappers::PreconditionAMG amg;
-    initialize_amg(amg, matrix, dofs, vertices, solver.smoother_sweeps);
+    initialize_amg(amg,
+                   matrix,
+                   dofs,
+                   vertices,
+                   solver.smoother_sweeps,
+                   AMGHierarchy::rigid_body);
     const auto [iterations, converged] =
       solve_krylov(true, matrix, x, rhs, amg, solver);
     AssertThrow(converged,
@@ -179,7 +194,8 @@ namespace PolyFrac
                  const TrilinosWrappers::SparseMatrix &,
                  const DoFMap<2> &,
                  const std::vector<Point<2>> &,
-                 const unsigned int);
+                 const unsigned int,
+                 const AMGHierarchy);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
@@ -192,7 +208,8 @@ namespace PolyFrac
                  const TrilinosWrappers::SparseMatrix &,
                  const DoFMap<3> &,
                  const std::vector<Point<3>> &,
-                 const unsigned int);
+                 const unsigned int,
+                 const AMGHierarchy);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,

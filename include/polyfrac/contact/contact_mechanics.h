@@ -198,9 +198,10 @@ namespace PolyFrac
      * AMG-preconditioned CG, or GMRES when a Coulomb face slips in contact
      * (Linear solver/Method = AMG, when every face allows it), else
      * UMFPACK on the saddle point, also when GMRES does not converge. The
-     * Krylov solvers stop once their residual is a tenth of what the
-     * Newton test accepts (Nonlinear solver/Tolerance times the load's
-     * norm): solving the step further gains nothing.
+     * Krylov solvers stop at the larger of a tenth of what the Newton test
+     * accepts (Nonlinear solver/Tolerance times the load's norm) and the
+     * forcing term η times the complementarity residual; the start step
+     * of nested iteration (@p iteration 0) at η² times the load's norm.
      * Returns how the step was solved (one line; empty for Method =
      * direct).
      */
@@ -223,8 +224,9 @@ namespace PolyFrac
      * The primal-dual active set step with the states of @p start: from
      * its multipliers (scaled by @p load, which fix the slip directions),
      * one linearised step in which each face keeps its given state.
+     * Returns how the step was solved, as linear_step().
      */
-    void
+    std::string
     predict(const MultiplierField<dim> &start,
             const double                load,
             Vector<double>             &x);

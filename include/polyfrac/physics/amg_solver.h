@@ -17,11 +17,32 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * Initialises @p amg, Trilinos ML smoothed aggregation, for @p matrix,
-   * whose rows are the displacement dofs of @p dofs (node sides, then
-   * bubbles), with the rigid-body modes of the node sides as near null
-   * space and @p smoother_sweeps Chebyshev sweeps per level (`Linear
-   * solver/Smoother sweeps`).
+   * The two ML hierarchies that PolyFrac builds (benchmarks/README.md,
+   * "AMG near null space" and "Memory budget").
+   */
+  enum class AMGHierarchy
+  {
+    /**
+     * Smoothed aggregation with the rigid-body modes as near null space:
+     * the fewest CG iterations, for a matrix that is factored once per
+     * solve (elasticity).
+     */
+    rigid_body,
+    /**
+     * Plain (unsmoothed) MIS aggregation with the translations as near null
+     * space: 10-15 % more CG iterations, but coarse levels a third as
+     * large and a set-up about twice as fast. For the reduced operators of
+     * the condensed Newton steps, whose hierarchy is rebuilt at every
+     * state change and dominates their peak memory.
+     */
+    lean
+  };
+
+  /**
+   * Initialises @p amg, Trilinos ML aggregation AMG of the kind @p hierarchy,
+   * for @p matrix, whose rows are the displacement dofs of @p dofs (node
+   * sides, then bubbles), with @p smoother_sweeps Chebyshev sweeps per level
+   * (`Linear solver/Smoother sweeps`).
    */
   template <int dim>
   void
@@ -29,7 +50,8 @@ namespace PolyFrac
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const DoFMap<dim>                    &dofs,
                  const std::vector<Point<dim>>        &vertices,
-                 const unsigned int                    smoother_sweeps);
+                 const unsigned int                    smoother_sweeps,
+                 const AMGHierarchy                    hierarchy);
 
   /**
    * Solves @p matrix @p x = @p rhs by CG (@p symmetric) or restarted GMRES,
