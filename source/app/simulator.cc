@@ -258,9 +258,15 @@ namespace PolyFrac
     timer.enter_subsection("mesh");
     auto discretization_pointer =
       coarser_discretization ?
-        std::make_unique<const LevelDiscretization<dim>>(
-          prm, *coarser_discretization, coarser_indicators) :
-        std::make_unique<const LevelDiscretization<dim>>(prm, level);
+        std::make_unique<LevelDiscretization<dim>>(prm,
+                                                   *coarser_discretization,
+                                                   coarser_indicators) :
+        std::make_unique<LevelDiscretization<dim>>(prm, level);
+    // Only an adaptive cycle refines the triangulation again: otherwise it
+    // goes before the model is built (0.17 KB per unknown at the 3D peak,
+    // benchmarks/README.md, "Memory budget").
+    if (prm.mesh.refinement != "adaptive")
+      discretization_pointer->triangulation.clear();
     const LevelDiscretization<dim> &discretization = *discretization_pointer;
     coarser_discretization.reset();
     timer.leave_subsection();

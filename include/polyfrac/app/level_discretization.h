@@ -57,7 +57,11 @@ namespace PolyFrac
     void
     print_summary(std::ostream &out) const;
 
-    /** The deal.II triangulation (generated box or gmsh file, refined). */
+    /**
+     * The deal.II triangulation (generated box or gmsh file, refined). The
+     * Simulator clears it once #mesh is built unless Mesh/Refinement =
+     * adaptive, whose next cycle refines it.
+     */
     Triangulation<dim> triangulation;
     /** Its polytopal view, distorted and agglomerated. */
     std::unique_ptr<PolytopalMesh<dim>> mesh;
