@@ -29,21 +29,23 @@ namespace PolyFrac
      *
      * With translations only, the coarse spaces cannot represent rotations,
      * low-energy motions that the smoother damps poorly; adding them cuts
-     * the CG iterations by 20-45 % (benchmarks/README.md).
+     * the CG iterations by 20-45 % (benchmarks/README.md). Without
+     * @p rotations, only the translations are made.
      */
     template <int dim>
     std::unique_ptr<Epetra_MultiVector>
     rigid_body_modes(const DoFMap<dim>             &dofs,
                      const std::vector<Point<dim>> &vertices,
-                     const Epetra_RowMatrix        &matrix)
+                     const Epetra_RowMatrix        &matrix,
+                     const bool                     rotations)
     {
       Point<dim> origin;
       for (const auto &side : dofs.node_sides)
         origin += vertices[side.vertex] / dofs.n_node_sides();
 
-      const Epetra_Map &map = matrix.OperatorDomainMap();
-      auto              modes =
-        std::make_unique<Epetra_MultiVector>(map, dim * (dim + 1) / 2);
+      const Epetra_Map &map   = matrix.OperatorDomainMap();
+      auto              modes = std::make_unique<Epetra_MultiVector>(
+        map, rotations ? dim * (dim + 1) / 2 : dim);
       for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
         {
           const auto row = [&](const unsigned int c) {
@@ -55,6 +57,8 @@ namespace PolyFrac
           };
           for (unsigned int c = 0; c < dim; ++c)
             (*modes)[c][row(c)] = 1.;
+          if (!rotations)
+            continue;
 
           const Tensor<1, dim> x = vertices[dofs.node_sides[n].vertex] - origin;
           unsigned int         mode = dim;
@@ -111,13 +115,12 @@ namespace PolyFrac
     Teuchos::ParameterList              parameters;
     std::unique_ptr<Epetra_MultiVector> modes;
     data.set_parameters(parameters, modes, matrix.trilinos_matrix());
-    modes = rigid_body_modes(dofs, vertices, matrix.trilinos_matrix());
+    modes = rigid_body_modes(dofs,
+                             vertices,
+                             matrix.trilinos_matrix(),
+                             hierarchy == AMGHierarchy::rigid_body);
     parameters.set("null space: type", "pre-computed");
-    // The translations are the first dim vectors of the column-major
-    // multivector.
-    parameters.set("null space: dimension",
-                   hierarchy == AMGHierarchy::lean ? static_cast<int>(dim) :
-                                                     modes->NumVectors());
+    parameters.set("null space: dimension", modes->NumVectors());
     parameters.set("null space: vectors", modes->Values());
     parameters.set("PDE equations", static_cast<int>(dim));
     if (hierarchy == AMGHierarchy::lean)
