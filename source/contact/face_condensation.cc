@@ -307,21 +307,53 @@ namespace PolyFrac
           }
       }
 
-    DynamicSparsityPattern dsp(stiffness.m(), n_u);
-    for (types::global_dof_index dof = 0; dof < first_bubble; ++dof)
-      if (free_nodal[dof])
-        dsp.add(dof, dof);
+    DynamicSparsityPattern dsp(bubble_rows.size(), n_u);
     for (types::global_dof_index k = 0; k < bubble_rows.size(); ++k)
       for (const auto &[column, value] : bubble_rows[k])
-        dsp.add(first_bubble + k, column);
+        dsp.add(k, column);
     elimination_pattern.copy_from(dsp);
     elimination.reinit(elimination_pattern);
-    for (types::global_dof_index dof = 0; dof < first_bubble; ++dof)
-      if (free_nodal[dof])
-        elimination.set(dof, dof, 1.);
     for (types::global_dof_index k = 0; k < bubble_rows.size(); ++k)
       for (const auto &[column, value] : bubble_rows[k])
-        elimination.set(first_bubble + k, column, value);
+        elimination.set(k, column, value);
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::eliminate(const Vector<double> &y,
+                                   Vector<double>       &x) const
+  {
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    for (types::global_dof_index dof = 0; dof < first_bubble; ++dof)
+      x(dof) = free_nodal[dof] ? y(dof) : 0.;
+    for (types::global_dof_index k = 0; k < elimination.m(); ++k)
+      {
+        double value = 0;
+        for (auto entry = elimination.begin(k); entry != elimination.end(k);
+             ++entry)
+          value += entry->value() * y(entry->column());
+        x(first_bubble + k) = value;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::eliminate_transpose(const Vector<double> &x,
+                                             Vector<double>       &y) const
+  {
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    y                                          = 0;
+    for (types::global_dof_index dof = 0; dof < first_bubble; ++dof)
+      if (free_nodal[dof])
+        y(dof) = x(dof);
+    for (types::global_dof_index k = 0; k < elimination.m(); ++k)
+      for (auto entry = elimination.begin(k); entry != elimination.end(k);
+           ++entry)
+        y(entry->column()) += entry->value() * x(first_bubble + k);
   }
 
 
@@ -331,11 +363,19 @@ namespace PolyFrac
   FaceCondensation<dim>::reduced_functional(
     const std::map<types::global_dof_index, double> &functional) const
   {
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
     std::map<types::global_dof_index, double> reduced;
     for (const auto &[dof, coefficient] : functional)
-      for (auto entry = elimination.begin(dof); entry != elimination.end(dof);
-           ++entry)
-        reduced[entry->column()] += coefficient * entry->value();
+      if (dof < first_bubble)
+        {
+          if (free_nodal[dof])
+            reduced[dof] += coefficient;
+        }
+      else if (dof < dofs.n_displacement_dofs())
+        for (auto entry = elimination.begin(dof - first_bubble);
+             entry != elimination.end(dof - first_bubble);
+             ++entry)
+          reduced[entry->column()] += coefficient * entry->value();
     return reduced;
   }
 
@@ -428,8 +468,8 @@ namespace PolyFrac
           {
             const types::global_dof_index bubble = dofs.bubble_dof(i, c);
             Vector<double>                W(stencil.size());
-            for (auto entry = elimination.begin(bubble);
-                 entry != elimination.end(bubble);
+            for (auto entry = elimination.begin(bubble - first_bubble);
+                 entry != elimination.end(bubble - first_bubble);
                  ++entry)
               W(std::lower_bound(stencil.begin(),
                                  stencil.end(),
@@ -456,7 +496,8 @@ namespace PolyFrac
                 matrix.add(stencil[s], x, row(s));
             }
           else
-            for (auto entry = elimination.begin(x); entry != elimination.end(x);
+            for (auto entry = elimination.begin(x - first_bubble);
+                 entry != elimination.end(x - first_bubble);
                  ++entry)
               {
                 scaled.equ(entry->value(), row);
@@ -535,6 +576,53 @@ namespace PolyFrac
 
 
   template <int dim>
+  Vector<double>
+  FaceCondensation<dim>::condensed_rhs(
+    const std::vector<FaceLinearisation<dim>> &faces,
+    const std::vector<LocalRows>              &rows,
+    const Vector<double>                      &residual,
+    const Vector<double>                      &offset) const
+  {
+    // −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the traction the open,
+    // free and slip rows prescribe.
+    const types::global_dof_index n_u = dofs.n_displacement_dofs();
+    Vector<double>                shifted(residual.size()), rhs(n_u);
+    stiffness.vmult(shifted, offset);
+    shifted += residual;
+    Vector<double> coupling_rhs(n_u);
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      if (rows[i].coupled)
+        // The known part of the kinematic reaction, q_k^T (R + A z_0),
+        // moved to the right-hand side: +(1/w_b) G^T C_k q_k^T (R + A z_0).
+        for (unsigned int k = 0; k < dim; ++k)
+          if (rows[i].kinematic[k])
+            {
+              double known = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                known += faces[i].frame[k][c] * shifted(dofs.bubble_dof(i, c));
+              for (const auto &[dof, u] :
+                   traction_coupling(faces[i], rows[i], i, k))
+                coupling_rhs(dof) += u * known / bubble_weight(i);
+            }
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        Tensor<1, dim> e;
+        for (unsigned int a = 0; a < rows[i].traction.size(); ++a)
+          e[rows[i].traction[a]] = rows[i].e(a);
+        const Tensor<1, dim> load = transpose(faces[i].frame) * e;
+        for (const auto &[block, w] : jumps[i])
+          for (unsigned int c = 0; c < dim; ++c)
+            shifted(dim * block + c) += faces[i].measure * w * load[c];
+      }
+    eliminate_transpose(shifted, rhs);
+    rhs *= -1.;
+    rhs += coupling_rhs;
+    return rhs;
+  }
+
+
+
+  template <int dim>
   typename FaceCondensation<dim>::KrylovSolve
   FaceCondensation<dim>::solve(
     const std::vector<FaceLinearisation<dim>> &linearisation,
@@ -573,45 +661,6 @@ namespace PolyFrac
     TrilinosWrappers::SparseMatrix matrix;
     make_reduced_operator(faces, rows, matrix);
 
-    // Right-hand side −Z^T (R + A z_0 + Σ |σ| [[v]]·Q^T e): e is the
-    // traction the open, free and slip rows prescribe.
-    Vector<double> shifted(residual.size()), rhs(n_u);
-    stiffness.vmult(shifted, offset);
-    shifted += residual;
-    Vector<double> coupling_rhs(n_u);
-    bool           symmetric = true;
-    for (unsigned int i = 0; i < faces.size(); ++i)
-      if (rows[i].coupled)
-        {
-          // The known part of the kinematic reaction, q_k^T (R + A z_0),
-          // moved to the right-hand side: +(1/w_b) G^T C_k q_k^T (R + A z_0).
-          symmetric = false;
-          for (unsigned int k = 0; k < dim; ++k)
-            if (rows[i].kinematic[k])
-              {
-                double known = 0;
-                for (unsigned int c = 0; c < dim; ++c)
-                  known +=
-                    faces[i].frame[k][c] * shifted(dofs.bubble_dof(i, c));
-                for (const auto &[dof, u] :
-                     traction_coupling(faces[i], rows[i], i, k))
-                  coupling_rhs(dof) += u * known / bubble_weight(i);
-              }
-        }
-    for (unsigned int i = 0; i < faces.size(); ++i)
-      {
-        Tensor<1, dim> e;
-        for (unsigned int a = 0; a < rows[i].traction.size(); ++a)
-          e[rows[i].traction[a]] = rows[i].e(a);
-        const Tensor<1, dim> load = transpose(faces[i].frame) * e;
-        for (const auto &[block, w] : jumps[i])
-          for (unsigned int c = 0; c < dim; ++c)
-            shifted(dim * block + c) += faces[i].measure * w * load[c];
-      }
-    elimination.Tvmult(rhs, shifted);
-    rhs *= -1.;
-    rhs += coupling_rhs;
-
     if (new_amg)
       {
         amg_matrix =
@@ -626,6 +675,12 @@ namespace PolyFrac
         amg_structure = structure;
         malloc_trim(0); // ML's set-up products
       }
+    // After the AMG set-up, whose transient sets the peak memory.
+    const Vector<double> rhs = condensed_rhs(faces, rows, residual, offset);
+    const bool           symmetric =
+      std::none_of(rows.begin(), rows.end(), [](const LocalRows &face) {
+        return face.coupled;
+      });
     Vector<double> y(n_u);
     KrylovSolve    krylov{symmetric ? "CG" : "GMRES", 0, true};
     std::tie(krylov.iterations, krylov.converged) = solve_krylov(
@@ -637,7 +692,7 @@ namespace PolyFrac
     // |σ| w_b dλ = −(R + A du)_b, then the traction ones dλ̃_T =
     // E d[[u]]~_T + e + C dλ̃_K.
     step.reinit(residual.size());
-    elimination.vmult(step, y);
+    eliminate(y, step);
     step += offset;
     const auto A_step = [&](const types::global_dof_index row) {
       double value = 0;

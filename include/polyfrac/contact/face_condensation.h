@@ -163,11 +163,36 @@ namespace PolyFrac
     double
     bubble_weight(const unsigned int i) const;
 
-    /** Z (displacement dofs ← reduced dofs) and its offset z_0. */
+    /**
+     * Z (displacement dofs ← reduced dofs) and its offset z_0. Only the
+     * rows W of Z on the bubbles are stored (in `elimination`): on the
+     * node sides Z is the identity D on the free dofs and zero on the
+     * fixed ones.
+     */
     void
     make_elimination(const std::vector<FaceLinearisation<dim>> &faces,
                      const std::vector<LocalRows>              &rows,
                      Vector<double>                            &offset);
+
+    /**
+     * The right-hand side of the reduced system, −Z^T (R + A z_0 + Σ_σ |σ|
+     * [[v]]·Q^T e) plus, on the Coulomb slip faces, the known part of the
+     * kinematic reaction, for the residual @p residual and the offset z_0
+     * @p offset.
+     */
+    Vector<double>
+    condensed_rhs(const std::vector<FaceLinearisation<dim>> &faces,
+                  const std::vector<LocalRows>              &rows,
+                  const Vector<double>                      &residual,
+                  const Vector<double>                      &offset) const;
+
+    /** @p x = Z @p y (the multiplier entries of @p x are left alone). */
+    void
+    eliminate(const Vector<double> &y, Vector<double> &x) const;
+
+    /** @p y = Z^T @p x (the multiplier entries of @p x are ignored). */
+    void
+    eliminate_transpose(const Vector<double> &x, Vector<double> &y) const;
 
     /** The functional @p functional (dof → coefficient) composed with Z. */
     std::map<types::global_dof_index, double>
@@ -262,7 +287,11 @@ namespace PolyFrac
     /** Dofs that are neither fixed nor bubbles. */
     std::vector<bool> free_nodal;
 
-    /** Z, the elimination of the multipliers (with its pattern). */
+    /**
+     * W, the rows of Z (the elimination of the multipliers) on the
+     * bubbles: row k is the bubble dof `dofs.bubble_dof(0, 0) + k`. With its
+     * pattern.
+     */
     SparsityPattern      elimination_pattern;
     SparseMatrix<double> elimination;
   };
