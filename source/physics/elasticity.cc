@@ -224,8 +224,10 @@ namespace PolyFrac
     const types::global_dof_index n_dofs = dofs.n_displacement_dofs();
 
     rhs.reinit(n_dofs);
-    {
-      // Scoped: the dynamic pattern is freed before the cell loop.
+    // The pattern and the matrix are made while the first cells are
+    // computed (cell_loop_after()); the dynamic pattern is freed before the
+    // other cells are.
+    const auto make_matrix = [&]() {
       DynamicSparsityPattern dsp(n_dofs);
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         constraints.add_entries_local_to_global(dofs.cell_dofs(c), dsp, false);
@@ -236,12 +238,12 @@ namespace PolyFrac
         }
       else
         trilinos_matrix.reinit(dsp);
-    }
+    };
     if (prm.solver.method == "direct")
-      assemble_cells(constraints, matrix, rhs);
+      assemble_cells(constraints, matrix, rhs, make_matrix);
     else
       {
-        assemble_cells(constraints, trilinos_matrix, rhs);
+        assemble_cells(constraints, trilinos_matrix, rhs, make_matrix);
         trilinos_matrix.compress(VectorOperation::add);
       }
 
@@ -317,8 +319,9 @@ namespace PolyFrac
   template <typename MatrixType>
   void
   Elasticity<dim>::assemble_cells(const AffineConstraints<double> &c,
-                                  MatrixType     &system_matrix,
-                                  Vector<double> &system_rhs) const
+                                  MatrixType                  &system_matrix,
+                                  Vector<double>              &system_rhs,
+                                  const std::function<void()> &prepare) const
   {
     /** One cell's stiffness, load and dofs. */
     struct CellSystem
@@ -332,7 +335,8 @@ namespace PolyFrac
     {
       PerThreadFunction<dim> force, stress;
     };
-    cell_loop<Loads, CellSystem>(
+    cell_loop_after<Loads, CellSystem>(
+      prepare,
       geometry.mesh.n_cells(),
       Loads{PerThreadFunction<dim>([this, t = body_force->get_time()]() {
               return make_body_force(t);

@@ -2,6 +2,8 @@
 #define polyfrac_base_cell_loop_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/thread_management.h>
 #include <deal.II/base/work_stream.h>
 
 #include <atomic>
@@ -63,23 +65,23 @@ namespace PolyFrac
 
 
   /**
-   * The cell loop above with a scratch object per thread: `worker(c,
-   * scratch, copy)`. WorkStream gives each thread its own copies of
-   * @p sample_scratch; PerThreadFunction is one such member.
+   * The cells @p first_cell, ..., @p end_cell − 1 on deal.II's threads,
+   * with a scratch object per thread (see cell_loop() below).
    */
   template <typename Scratch,
             typename CopyData,
             typename Worker,
             typename Copier>
   void
-  cell_loop(const unsigned int n_cells,
-            const Scratch     &sample_scratch,
-            const Worker      &worker,
-            const Copier      &copier,
-            const CopyData    &sample = CopyData())
+  cell_range_loop(const unsigned int first_cell,
+                  const unsigned int end_cell,
+                  const Scratch     &sample_scratch,
+                  const Worker      &worker,
+                  const Copier      &copier,
+                  const CopyData    &sample = CopyData())
   {
-    std::vector<unsigned int> cells(n_cells);
-    std::iota(cells.begin(), cells.end(), 0u);
+    std::vector<unsigned int> cells(end_cell - first_cell);
+    std::iota(cells.begin(), cells.end(), first_cell);
     using Iterator = std::vector<unsigned int>::const_iterator;
     // An exception on a worker thread would only be printed by deal.II:
     // keep the first one, skip the remaining cells and rethrow it here, so
@@ -114,6 +116,99 @@ namespace PolyFrac
       sample);
     if (failure)
       std::rethrow_exception(failure);
+  }
+
+
+
+  /**
+   * The cell loop above with a scratch object per thread: `worker(c,
+   * scratch, copy)`. WorkStream gives each thread its own copies of
+   * @p sample_scratch; PerThreadFunction is one such member.
+   */
+  template <typename Scratch,
+            typename CopyData,
+            typename Worker,
+            typename Copier>
+  void
+  cell_loop(const unsigned int n_cells,
+            const Scratch     &sample_scratch,
+            const Worker      &worker,
+            const Copier      &copier,
+            const CopyData    &sample = CopyData())
+  {
+    cell_range_loop(0, n_cells, sample_scratch, worker, copier, sample);
+  }
+
+
+
+  /**
+   * cell_loop() with a scratch object, after a set-up @p prepare that the
+   * copier needs (the sparsity pattern of the matrix it adds to). On more
+   * than one thread, a task computes the first cells (at most a third of
+   * them) into a buffer while this thread runs @p prepare (which may thus
+   * call MPI); the buffered cells are then copied in cell order and the
+   * others go through the cell loop. The serial set-up so hides behind cell
+   * work, for the memory of the buffered local systems, and the sums are
+   * those of cell_loop().
+   */
+  template <typename Scratch,
+            typename CopyData,
+            typename Prepare,
+            typename Worker,
+            typename Copier>
+  void
+  cell_loop_after(const Prepare     &prepare,
+                  const unsigned int n_cells,
+                  const Scratch     &sample_scratch,
+                  const Worker      &worker,
+                  const Copier      &copier,
+                  const CopyData    &sample = CopyData())
+  {
+    std::vector<CopyData> buffered;
+    if (MultithreadInfo::n_threads() > 1)
+      {
+        buffered.reserve(n_cells / 3 + 1);
+        std::atomic<bool>  prepared(false);
+        std::exception_ptr failure;
+        Threads::Task<>    early = Threads::new_task([&]() {
+          try
+            {
+              Scratch scratch(sample_scratch);
+              while (!prepared && 3 * buffered.size() < n_cells)
+                {
+                  buffered.push_back(sample);
+                  worker(buffered.size() - 1, scratch, buffered.back());
+                }
+            }
+          catch (...)
+            {
+              failure = std::current_exception();
+            }
+        });
+        try
+          {
+            prepare();
+          }
+        catch (...)
+          {
+            prepared = true;
+            early.join();
+            throw;
+          }
+        prepared = true;
+        early.join();
+        if (failure)
+          std::rethrow_exception(failure);
+      }
+    else
+      prepare();
+    for (const CopyData &copy : buffered)
+      copier(copy);
+    const unsigned int first_cell = buffered.size();
+    buffered.clear();
+    buffered.shrink_to_fit();
+    cell_range_loop(
+      first_cell, n_cells, sample_scratch, worker, copier, sample);
   }
 
 

@@ -16,6 +16,7 @@
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/physics/mechanical_state.h>
 
+#include <functional>
 #include <memory>
 
 namespace PolyFrac
@@ -205,13 +206,17 @@ namespace PolyFrac
     /**
      * Adds the cell stiffness matrices and body-force loads, condensed by
      * @p c, to @p system_matrix and @p system_rhs: a SparseMatrix<double>
-     * for UMFPACK or a TrilinosWrappers::SparseMatrix for AMG.
+     * for UMFPACK or a TrilinosWrappers::SparseMatrix for AMG. @p prepare
+     * makes @p system_matrix (its pattern) while the first cells are
+     * computed (cell_loop_after()).
      */
     template <typename MatrixType>
     void
-    assemble_cells(const AffineConstraints<double> &c,
-                   MatrixType                      &system_matrix,
-                   Vector<double>                  &system_rhs) const;
+    assemble_cells(
+      const AffineConstraints<double> &c,
+      MatrixType                      &system_matrix,
+      Vector<double>                  &system_rhs,
+      const std::function<void()>     &prepare = [] {}) const;
 
     /**
      * Adds the face loads Σ |σ| load · (coefficients): the Neumann
