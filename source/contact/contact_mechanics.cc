@@ -65,18 +65,42 @@ namespace PolyFrac
     make_dirichlet_values();
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;
-    make_saddle_point_pattern(geometry, dofs, jumps, sparsity);
-    stiffness.reinit(sparsity);
     load_vector.reinit(n);
-    elasticity.assemble_operator(stiffness, load_vector);
+    if (prm.solver.method == "AMG" && prm.contact.bubbles)
+      {
+        condensation =
+          std::make_unique<FaceCondensation<dim>>(reduced_graph_stiffness,
+                                                  dofs,
+                                                  jumps,
+                                                  dirichlet,
+                                                  geometry.mesh.vertices,
+                                                  prm.solver);
+        reduced_graph_stiffness.reinit(condensation->pattern());
+        elasticity.assemble_operator(reduced_graph_stiffness, load_vector);
+      }
+    else
+      {
+        make_saddle_point_pattern(geometry, dofs, jumps, sparsity);
+        stiffness.reinit(sparsity);
+        elasticity.assemble_operator(stiffness, load_vector);
+      }
     compute_load_norm();
 
     solution.reinit(n);
     previous_step.reinit(n);
+  }
 
-    if (prm.solver.method == "AMG" && prm.contact.bubbles)
-      condensation = std::make_unique<FaceCondensation<dim>>(
-        stiffness, dofs, jumps, dirichlet, geometry.mesh.vertices, prm.solver);
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::stiffness_vmult(const Vector<double> &src,
+                                         Vector<double>       &dst) const
+  {
+    if (condensation)
+      vmult_displacement_block(reduced_graph_stiffness, src, dst);
+    else
+      stiffness.vmult(dst, src);
   }
 
 
@@ -108,7 +132,7 @@ namespace PolyFrac
     Vector<double>     lifting(n), reduced(n);
     for (const auto &[dof, value] : dirichlet)
       lifting(dof) = value;
-    stiffness.vmult(reduced, lifting);
+    stiffness_vmult(lifting, reduced);
     reduced.sadd(-1., load_vector);
     for (const auto &[dof, value] : dirichlet)
       reduced(dof) = 0;
@@ -177,7 +201,7 @@ namespace PolyFrac
     R.normal.resize(n_faces);
     R.tangential.resize(n_faces);
     R.faces.resize(n_faces);
-    stiffness.vmult(R.vector, x);
+    stiffness_vmult(x, R.vector);
     R.vector.add(-load, load_vector);
 
     double complementarity = 0, measure = 0, stress_scale = 0;
@@ -349,9 +373,22 @@ namespace PolyFrac
       report = "saddle-point step (UMFPACK): a face's conditions cannot be "
                "condensed";
 
-    SparseMatrix<double> jacobian(sparsity);
+    // With the condensed steps A lives on the reduced graph only: the
+    // saddle-point pattern is made for this step.
+    SparsityPattern        step_pattern;
+    const SparsityPattern *pattern = &sparsity;
+    if (condensation)
+      {
+        make_saddle_point_pattern(geometry, dofs, jumps, step_pattern);
+        pattern = &step_pattern;
+      }
+    SparseMatrix<double> jacobian(*pattern);
+    if (condensation)
+      copy_displacement_block(reduced_graph_stiffness, jacobian);
+    else
+      jacobian.copy_from(stiffness);
     assemble_saddle_point_jacobian(
-      stiffness, R.faces, beta, jumps, dofs, dirichlet, jacobian);
+      R.faces, beta, jumps, dofs, dirichlet, jacobian);
     Vector<double> rhs(R.vector);
     rhs *= -1.;
     step.reinit(rhs.size());

@@ -10,13 +10,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <tuple>
 
 namespace PolyFrac
 {
   template <int dim>
   FaceCondensation<dim>::FaceCondensation(
-    const SparseMatrix<double>                      &stiffness,
+    const TrilinosWrappers::SparseMatrix            &stiffness,
     const DoFMap<dim>                               &dofs,
     const std::vector<BlockCoefficients>            &jumps,
     const std::map<types::global_dof_index, double> &dirichlet,
@@ -70,6 +71,25 @@ namespace PolyFrac
 
 
   template <int dim>
+  typename FaceCondensation<dim>::StiffnessRow
+  FaceCondensation<dim>::stiffness_row(const types::global_dof_index row) const
+  {
+    StiffnessRow view;
+    double      *values;
+    int         *columns;
+    const int    error = stiffness.trilinos_matrix().ExtractMyRowView(
+      static_cast<int>(row), view.length, values, columns);
+    AssertThrow(error == 0,
+                ExcMessage("Epetra error " + std::to_string(error) +
+                           " reading a row of the stiffness matrix."));
+    view.values  = values;
+    view.columns = columns;
+    return view;
+  }
+
+
+
+  template <int dim>
   void
   FaceCondensation<dim>::make_reduced_pattern()
   {
@@ -77,34 +97,35 @@ namespace PolyFrac
     const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
     for (unsigned int i = 0; i < jumps.size(); ++i)
       stencils.push_back(face_stencil(i));
-    DynamicSparsityPattern dsp(n_u);
-    for (types::global_dof_index row = 0; row < n_u; ++row)
+    // The pattern of A: the cell blocks, and the cells each bubble enters.
+    DynamicSparsityPattern                 dsp(n_u);
+    std::vector<std::vector<unsigned int>> bubble_cells(jumps.size());
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
       {
-        dsp.add(row, row);
-        if (row < first_bubble && free_nodal[row])
-          for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
-               ++entry)
-            if (entry->column() < first_bubble && free_nodal[entry->column()])
-              dsp.add(row, entry->column());
+        const auto local = dofs.cell_dofs(c);
+        for (const auto row : local)
+          dsp.add_entries(row, local.begin(), local.end());
+        for (const unsigned int i : dofs.cell_bubbles(c))
+          bubble_cells[i].push_back(c);
       }
+    // The couplings of the face stencils through the rows of A on the
+    // bubbles (those rows are the dofs of the cells the bubble enters).
     for (unsigned int i = 0; i < jumps.size(); ++i)
       {
-        const auto &stencil = stencils[i];
-        for (unsigned int c = 0; c < dim; ++c)
-          for (auto entry = stiffness.begin(dofs.bubble_dof(i, c));
-               entry != stiffness.end(dofs.bubble_dof(i, c));
-               ++entry)
+        const auto                       &stencil = stencils[i];
+        std::set<types::global_dof_index> coupled;
+        for (const unsigned int c : bubble_cells[i])
+          for (const auto x : dofs.cell_dofs(c))
+            coupled.insert(x);
+        for (const auto x : coupled)
+          if (x >= first_bubble)
+            for (const auto row : stencils[(x - first_bubble) / dim])
+              dsp.add_entries(row, stencil.begin(), stencil.end(), true);
+          else if (free_nodal[x])
             {
-              const types::global_dof_index x = entry->column();
-              if (x >= first_bubble && x < n_u)
-                for (const auto row : stencils[(x - first_bubble) / dim])
-                  dsp.add_entries(row, stencil.begin(), stencil.end(), true);
-              else if (x < first_bubble && free_nodal[x])
-                {
-                  dsp.add_entries(x, stencil.begin(), stencil.end(), true);
-                  for (const auto row : stencil)
-                    dsp.add(row, x);
-                }
+              dsp.add_entries(x, stencil.begin(), stencil.end(), true);
+              for (const auto row : stencil)
+                dsp.add(row, x);
             }
       }
     reduced_pattern.copy_from(dsp);
@@ -269,7 +290,7 @@ namespace PolyFrac
     Vector<double>                            &offset)
   {
     const types::global_dof_index n_u = dofs.n_displacement_dofs();
-    offset.reinit(stiffness.m());
+    offset.reinit(n_u + dim * jumps.size());
 
     // The entries of Z: identity on free node-side dofs. On the bubble of
     // face i, b = Q^T b̃, with, per local row k, b̃_k a reduced dof (stored
@@ -406,15 +427,12 @@ namespace PolyFrac
                                          const unsigned int            i,
                                          const unsigned int            k) const
   {
-    const types::global_dof_index             n_u = dofs.n_displacement_dofs();
     std::map<types::global_dof_index, double> functional;
     for (unsigned int c = 0; c < dim; ++c)
       {
-        const types::global_dof_index row = dofs.bubble_dof(i, c);
-        for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
-             ++entry)
-          if (entry->column() < n_u)
-            functional[entry->column()] += face.frame[k][c] * entry->value();
+        const auto row = stiffness_row(dofs.bubble_dof(i, c));
+        for (int e = 0; e < row.length; ++e)
+          functional[row.columns[e]] += face.frame[k][c] * row.values[e];
       }
     return functional;
   }
@@ -434,27 +452,26 @@ namespace PolyFrac
     // graph is reference counted): only its values are new.
     matrix.reinit(reduced_pattern);
 
-    // D A D, a row at a time (columns sorted: A stores its diagonal first).
+    // D A D, a row at a time (A lives on the same graph).
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
-    for (types::global_dof_index row = 0; row < first_bubble; ++row)
-      if (free_nodal[row])
+    for (types::global_dof_index r = 0; r < first_bubble; ++r)
+      if (free_nodal[r])
         {
           columns.clear();
           values.clear();
-          for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
-               ++entry)
-            if (entry->column() < first_bubble && free_nodal[entry->column()])
-              {
-                const auto at = std::upper_bound(columns.begin(),
-                                                 columns.end(),
-                                                 entry->column());
-                values.insert(values.begin() + (at - columns.begin()),
-                              entry->value());
-                columns.insert(at, entry->column());
-              }
+          const auto row = stiffness_row(r);
+          for (int e = 0; e < row.length; ++e)
+            {
+              const types::global_dof_index column = row.columns[e];
+              if (column < first_bubble && free_nodal[column])
+                {
+                  columns.push_back(column);
+                  values.push_back(row.values[e]);
+                }
+            }
           matrix.add(
-            row, columns.size(), columns.data(), values.data(), false, true);
+            r, columns.size(), columns.data(), values.data(), false, true);
         }
 
     // D A W + (D A W)^T + W^T A W, face by face: K = A W restricted to the
@@ -475,17 +492,18 @@ namespace PolyFrac
                                  stencil.end(),
                                  entry->column()) -
                 stencil.begin()) = entry->value();
-            for (auto entry = stiffness.begin(bubble);
-                 entry != stiffness.end(bubble);
-                 ++entry)
-              if (entry->column() < n_u && (entry->column() >= first_bubble ||
-                                            free_nodal[entry->column()]))
-                {
-                  auto &row = K[entry->column()];
-                  if (row.size() == 0)
-                    row.reinit(stencil.size());
-                  row.add(entry->value(), W);
-                }
+            const auto A_row = stiffness_row(bubble);
+            for (int e = 0; e < A_row.length; ++e)
+              {
+                const types::global_dof_index column = A_row.columns[e];
+                if (column >= first_bubble || free_nodal[column])
+                  {
+                    auto &row = K[column];
+                    if (row.size() == 0)
+                      row.reinit(stencil.size());
+                    row.add(A_row.values[e], W);
+                  }
+              }
           }
         for (const auto &[x, row] : K)
           if (x < first_bubble)
@@ -587,7 +605,7 @@ namespace PolyFrac
     // free and slip rows prescribe.
     const types::global_dof_index n_u = dofs.n_displacement_dofs();
     Vector<double>                shifted(residual.size()), rhs(n_u);
-    stiffness.vmult(shifted, offset);
+    vmult_displacement_block(stiffness, offset, shifted);
     shifted += residual;
     Vector<double> coupling_rhs(n_u);
     for (unsigned int i = 0; i < faces.size(); ++i)
@@ -694,11 +712,11 @@ namespace PolyFrac
     step.reinit(residual.size());
     eliminate(y, step);
     step += offset;
-    const auto A_step = [&](const types::global_dof_index row) {
-      double value = 0;
-      for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
-           ++entry)
-        value += entry->value() * step(entry->column());
+    const auto A_step = [&](const types::global_dof_index r) {
+      const auto row   = stiffness_row(r);
+      double     value = 0;
+      for (int e = 0; e < row.length; ++e)
+        value += row.values[e] * step(row.columns[e]);
       return value;
     };
     for (unsigned int i = 0; i < faces.size(); ++i)

@@ -39,10 +39,50 @@ namespace PolyFrac
 
 
 
+  void
+  vmult_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
+                           const Vector<double>                 &src,
+                           Vector<double>                       &dst)
+  {
+    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
+    dst                       = 0;
+    for (int row = 0; row < A.NumMyRows(); ++row)
+      {
+        int     length;
+        double *values;
+        int    *columns;
+        A.ExtractMyRowView(row, length, values, columns);
+        double sum = 0;
+        for (int e = 0; e < length; ++e)
+          sum += values[e] * src(columns[e]);
+        dst(row) = sum;
+      }
+  }
+
+
+
+  void
+  copy_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
+                          SparseMatrix<double>                 &matrix)
+  {
+    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
+    for (int row = 0; row < A.NumMyRows(); ++row)
+      {
+        int     length;
+        double *values;
+        int    *columns;
+        A.ExtractMyRowView(row, length, values, columns);
+        for (int e = 0; e < length; ++e)
+          if (values[e] != 0.)
+            matrix.set(row, columns[e], values[e]);
+      }
+  }
+
+
+
   template <int dim>
   void
   assemble_saddle_point_jacobian(
-    const SparseMatrix<double>                      &stiffness,
     const std::vector<FaceLinearisation<dim>>       &faces,
     const std::vector<double>                       &beta,
     const std::vector<BlockCoefficients>            &jumps,
@@ -50,7 +90,6 @@ namespace PolyFrac
     const std::map<types::global_dof_index, double> &dirichlet,
     SparseMatrix<double>                            &jacobian)
   {
-    jacobian.copy_from(stiffness);
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
         // The rows −|σ|/β Q^T (M_λ Q dλ + M_j Q d[[u]]) and the coupling
@@ -83,7 +122,7 @@ namespace PolyFrac
     for (const auto &[dof, value] : dirichlet)
       {
         const double diagonal =
-          std::max(std::abs(stiffness.diag_element(dof)), 1e-300);
+          std::max(std::abs(jacobian.diag_element(dof)), 1e-300);
         for (auto entry = jacobian.begin(dof); entry != jacobian.end(dof);
              ++entry)
           entry->value() = 0;
@@ -105,7 +144,6 @@ namespace PolyFrac
                             SparsityPattern &);
   template void
   assemble_saddle_point_jacobian(
-    const SparseMatrix<double> &,
     const std::vector<FaceLinearisation<2>> &,
     const std::vector<double> &,
     const std::vector<BlockCoefficients> &,
@@ -114,7 +152,6 @@ namespace PolyFrac
     SparseMatrix<double> &);
   template void
   assemble_saddle_point_jacobian(
-    const SparseMatrix<double> &,
     const std::vector<FaceLinearisation<3>> &,
     const std::vector<double> &,
     const std::vector<BlockCoefficients> &,

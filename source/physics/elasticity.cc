@@ -267,6 +267,21 @@ namespace PolyFrac
 
   template <int dim>
   void
+  Elasticity<dim>::assemble_operator(
+    TrilinosWrappers::SparseMatrix &system_matrix,
+    Vector<double>                 &system_rhs) const
+  {
+    AffineConstraints<double> none;
+    none.close();
+    assemble_cells(none, system_matrix, system_rhs);
+    system_matrix.compress(VectorOperation::add);
+    assemble_face_loads(none, system_rhs, false);
+  }
+
+
+
+  template <int dim>
+  void
   Elasticity<dim>::assemble_face_loads(
     const AffineConstraints<double> &c,
     Vector<double>                  &system_rhs,

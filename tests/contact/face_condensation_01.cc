@@ -132,9 +132,35 @@ check(const unsigned int subdivisions, const unsigned int n_states)
         residual(dofs.multiplier_dof(i, d)) = -faces[i].measure / beta * r[d];
     }
 
+  // A once more, as ContactMechanics stores it for the condensed steps: a
+  // Trilinos matrix on the graph of the reduced operators. Copied back
+  // into the saddle-point pattern, it must be the deal.II one.
+  TrilinosWrappers::SparseMatrix reduced_graph_stiffness;
+  FaceCondensation<dim>          condensation(reduced_graph_stiffness,
+                                     dofs,
+                                     jumps,
+                                     dirichlet,
+                                     geometry.mesh.vertices,
+                                     prm.solver);
+  reduced_graph_stiffness.reinit(condensation.pattern());
+  Vector<double> load_again(pattern.n_rows());
+  elasticity.assemble_operator(reduced_graph_stiffness, load_again);
+  SparseMatrix<double> copy(pattern);
+  copy_displacement_block(reduced_graph_stiffness, copy);
+  double copy_error = 0;
+  for (types::global_dof_index row = 0; row < pattern.n_rows(); ++row)
+    for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
+         ++entry)
+      copy_error =
+        std::max(copy_error,
+                 std::abs(entry->value() - copy(row, entry->column())));
+  AssertThrow(copy_error <= 1e-12 * stiffness.linfty_norm(),
+              ExcMessage("The Trilinos copy of A differs from A by " +
+                         std::to_string(copy_error)));
+
   SparseMatrix<double> jacobian(pattern);
-  assemble_saddle_point_jacobian(stiffness,
-                                 faces,
+  jacobian.copy_from(stiffness);
+  assemble_saddle_point_jacobian(faces,
                                  std::vector<double>(n_faces, beta),
                                  jumps,
                                  dofs,
@@ -145,8 +171,6 @@ check(const unsigned int subdivisions, const unsigned int n_states)
   SparseDirectUMFPACK direct;
   direct.solve(jacobian, direct_step);
 
-  FaceCondensation<dim> condensation(
-    stiffness, dofs, jumps, dirichlet, geometry.mesh.vertices, prm.solver);
   const bool condensable = FaceCondensation<dim>::condensable(faces);
   const auto krylov = condensation.solve(faces, residual, 0., condensed_step);
 

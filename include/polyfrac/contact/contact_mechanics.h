@@ -231,6 +231,11 @@ namespace PolyFrac
             const double                load,
             Vector<double>             &x);
 
+    /** @p dst = A @p src (zero on the multiplier rows), whichever way A is
+     * stored. */
+    void
+    stiffness_vmult(const Vector<double> &src, Vector<double> &dst) const;
+
     /** Newton on one load step; false if it did not converge. */
     bool
     newton(const double load, Vector<double> &x, std::ostream &out);
@@ -251,10 +256,20 @@ namespace PolyFrac
     /** Dirichlet values (full load) and the dofs they fix. */
     std::map<types::global_dof_index, double> dirichlet;
 
-    SparsityPattern      sparsity;
-    SparseMatrix<double> stiffness;
-    Vector<double>       load_vector;
-    double               load_norm;
+    /**
+     * A, the stiffness of the displacement dofs, stored once: with
+     * Linear solver/Method = direct in the displacement block of the
+     * saddle-point pattern (`sparsity`, `stiffness`); with the condensed
+     * steps as a Trilinos matrix on the graph of the reduced operators
+     * (`reduced_graph_stiffness`, FaceCondensation::pattern()), and then
+     * `sparsity` and `stiffness` stay empty (benchmarks/README.md, "Memory
+     * budget").
+     */
+    SparsityPattern                sparsity;
+    SparseMatrix<double>           stiffness;
+    TrilinosWrappers::SparseMatrix reduced_graph_stiffness;
+    Vector<double>                 load_vector;
+    double                         load_norm;
     /** The loads of Elasticity at time load_time (set_loads() reuses them). */
     Vector<double> elastic_load;
     double         load_time = std::numeric_limits<double>::quiet_NaN();

@@ -76,11 +76,12 @@ namespace PolyFrac
   {
   public:
     /**
-     * @p stiffness is the saddle-point matrix whose displacement block is
-     * A (the multiplier rows and columns are ignored); @p jumps the
+     * @p stiffness is A, the stiffness of the displacement dofs, which the
+     * caller assembles on pattern() after this constructor (A is stored
+     * once, on the graph of the reduced operators); @p jumps the
      * coefficients of [[u]]_σ; @p dirichlet the fixed dofs.
      */
-    FaceCondensation(const SparseMatrix<double>                      &stiffness,
+    FaceCondensation(const TrilinosWrappers::SparseMatrix            &stiffness,
                      const DoFMap<dim>                               &dofs,
                      const std::vector<BlockCoefficients>            &jumps,
                      const std::map<types::global_dof_index, double> &dirichlet,
@@ -103,6 +104,16 @@ namespace PolyFrac
        */
       bool converged;
     };
+
+    /**
+     * The graph of the reduced operators, which holds that of A (the cell
+     * blocks, fixed dofs included) too: the caller builds A on it.
+     */
+    const TrilinosWrappers::SparsityPattern &
+    pattern() const
+    {
+      return reduced_pattern;
+    }
 
     /** Whether every face can be condensed (see the class documentation). */
     static bool
@@ -142,6 +153,18 @@ namespace PolyFrac
 
     static std::vector<bool>
     kinematic_rows(const FaceLinearisation<dim> &face);
+
+    /** A row of A: Epetra's arrays of its (sorted) columns and values. */
+    struct StiffnessRow
+    {
+      int           length;
+      const int    *columns;
+      const double *values;
+    };
+
+    /** Row @p row of A (in serial, Epetra's local indices are the dofs). */
+    StiffnessRow
+    stiffness_row(const types::global_dof_index row) const;
 
     static LocalRows
     local_rows(const FaceLinearisation<dim> &face);
@@ -226,11 +249,11 @@ namespace PolyFrac
 
     /**
      * The face stencils (face_stencil()) and, from them, the pattern of
-     * Z^T A Z for every row structure at once: that of A on
-     * the free node-side dofs, the stencil of each face against the dofs
-     * that its bubble couples to in A (both ways), and the stencils of two
-     * faces whose bubbles are coupled in A. It holds the Coulomb coupling
-     * and Σ_σ |σ| E too, and depends on the mesh only.
+     * Z^T A Z for every row structure at once: that of A (the cell
+     * blocks), the stencil of each face against the dofs that its bubble
+     * couples to in A (both ways), and the stencils of two faces whose
+     * bubbles are coupled in A. It holds the Coulomb coupling and Σ_σ |σ|
+     * E too, and depends on the mesh only. A itself is stored on it.
      */
     void
     make_reduced_pattern();
@@ -246,14 +269,15 @@ namespace PolyFrac
      * are summed straight into the Trilinos matrix, on reduced_pattern:
      * no deal.II copy of the operator is made. Entries that are zero for
      * the current row structure stay in it as explicit zeros (about 1 % of
-     * its entries).
+     * its entries), and so do the couplings of the fixed dofs (which A
+     * has).
      */
     void
     make_reduced_operator(const std::vector<FaceLinearisation<dim>> &faces,
                           const std::vector<LocalRows>              &rows,
                           TrilinosWrappers::SparseMatrix            &matrix);
 
-    const SparseMatrix<double>                      &stiffness;
+    const TrilinosWrappers::SparseMatrix            &stiffness;
     const DoFMap<dim>                               &dofs;
     const std::vector<BlockCoefficients>            &jumps;
     const std::map<types::global_dof_index, double> &dirichlet;

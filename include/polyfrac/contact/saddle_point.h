@@ -4,6 +4,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
@@ -49,8 +51,28 @@ namespace PolyFrac
                             SparsityPattern                      &pattern);
 
   /**
+   * @p dst = A @p src on the displacement rows of the saddle-point system,
+   * zero on the multiplier rows, for A stored as a Trilinos matrix on the
+   * displacement dofs (Linear solver/Method = AMG, FaceCondensation).
+   */
+  void
+  vmult_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
+                           const Vector<double>                 &src,
+                           Vector<double>                       &dst);
+
+  /**
+   * Copies A, stored as a Trilinos matrix on the displacement dofs, into
+   * the displacement block of @p matrix, whose pattern must hold that of A
+   * (make_saddle_point_pattern()).
+   */
+  void
+  copy_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
+                          SparseMatrix<double>                 &matrix);
+
+  /**
    * The generalised Jacobian of the contact saddle-point system: @p
-   * stiffness (A in its displacement block), the coupling columns
+   * jacobian holds A in its displacement block on entry (and zeros
+   * elsewhere); this adds the coupling columns
    * |σ| [[v]]_σ and, per face, the rows −|σ|/β_σ Q^T (M_λ Q dλ + M_j Q
    * d[[u]]), so that on a face in stick and contact the row block is the
    * transpose of the coupling. The rows of the fixed dofs (@p dirichlet)
@@ -59,7 +81,6 @@ namespace PolyFrac
   template <int dim>
   void
   assemble_saddle_point_jacobian(
-    const SparseMatrix<double>                      &stiffness,
     const std::vector<FaceLinearisation<dim>>       &faces,
     const std::vector<double>                       &beta,
     const std::vector<BlockCoefficients>            &jumps,

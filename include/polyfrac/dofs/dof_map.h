@@ -82,6 +82,13 @@ namespace PolyFrac
       return node_sides.size();
     }
 
+    /** Number of cells of the mesh numbered. */
+    unsigned int
+    n_cells() const
+    {
+      return cell_node_sides.size();
+    }
+
     /** Number of bubbles (one per fracture face). */
     unsigned int
     n_bubbles() const

@@ -172,6 +172,14 @@ namespace PolyFrac
     assemble_operator(SparseMatrix<double> &system_matrix,
                       Vector<double>       &system_rhs) const;
 
+    /**
+     * The same, into a Trilinos matrix of the displacement dofs (built on
+     * a pattern that holds the cell blocks), which is compressed.
+     */
+    void
+    assemble_operator(TrilinosWrappers::SparseMatrix &system_matrix,
+                      Vector<double>                 &system_rhs) const;
+
   private:
     /** Throws, listing the ids the mesh has, if a Dirichlet or Neumann
      * boundary id of the parameters is carried by no boundary face. */
