@@ -77,6 +77,10 @@ namespace PolyFrac
                                                   prm.solver);
         reduced_graph_stiffness.reinit(condensation->pattern());
         elasticity.assemble_operator(reduced_graph_stiffness, load_vector);
+        // stiffness_row() reads Epetra's local column indices as dofs.
+        Assert(reduced_graph_stiffness.trilinos_matrix().ColMap().SameAs(
+                 reduced_graph_stiffness.trilinos_matrix().RowMap()),
+               ExcNotImplemented());
       }
     else
       {

@@ -71,25 +71,6 @@ namespace PolyFrac
 
 
   template <int dim>
-  typename FaceCondensation<dim>::StiffnessRow
-  FaceCondensation<dim>::stiffness_row(const types::global_dof_index row) const
-  {
-    StiffnessRow view;
-    double      *values;
-    int         *columns;
-    const int    error = stiffness.trilinos_matrix().ExtractMyRowView(
-      static_cast<int>(row), view.length, values, columns);
-    AssertThrow(error == 0,
-                ExcMessage("Epetra error " + std::to_string(error) +
-                           " reading a row of the stiffness matrix."));
-    view.values  = values;
-    view.columns = columns;
-    return view;
-  }
-
-
-
-  template <int dim>
   void
   FaceCondensation<dim>::make_reduced_pattern()
   {
@@ -430,7 +411,7 @@ namespace PolyFrac
     std::map<types::global_dof_index, double> functional;
     for (unsigned int c = 0; c < dim; ++c)
       {
-        const auto row = stiffness_row(dofs.bubble_dof(i, c));
+        const auto row = stiffness_row(stiffness, dofs.bubble_dof(i, c));
         for (int e = 0; e < row.length; ++e)
           functional[row.columns[e]] += face.frame[k][c] * row.values[e];
       }
@@ -460,7 +441,7 @@ namespace PolyFrac
         {
           columns.clear();
           values.clear();
-          const auto row = stiffness_row(r);
+          const auto row = stiffness_row(stiffness, r);
           for (int e = 0; e < row.length; ++e)
             {
               const types::global_dof_index column = row.columns[e];
@@ -492,7 +473,7 @@ namespace PolyFrac
                                  stencil.end(),
                                  entry->column()) -
                 stencil.begin()) = entry->value();
-            const auto A_row = stiffness_row(bubble);
+            const auto A_row = stiffness_row(stiffness, bubble);
             for (int e = 0; e < A_row.length; ++e)
               {
                 const types::global_dof_index column = A_row.columns[e];
@@ -713,7 +694,7 @@ namespace PolyFrac
     eliminate(y, step);
     step += offset;
     const auto A_step = [&](const types::global_dof_index r) {
-      const auto row   = stiffness_row(r);
+      const auto row   = stiffness_row(stiffness, r);
       double     value = 0;
       for (int e = 0; e < row.length; ++e)
         value += row.values[e] * step(row.columns[e]);

@@ -39,23 +39,39 @@ namespace PolyFrac
 
 
 
+  StiffnessRow
+  stiffness_row(const TrilinosWrappers::SparseMatrix &matrix,
+                const types::global_dof_index         row)
+  {
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    StiffnessRow            view;
+    double                 *values;
+    int                    *columns;
+    const int               error =
+      A.ExtractMyRowView(static_cast<int>(row), view.length, values, columns);
+    AssertThrow(error == 0,
+                ExcMessage("Epetra error " + std::to_string(error) +
+                           " reading a row of the stiffness matrix."));
+    view.values  = values;
+    view.columns = columns;
+    return view;
+  }
+
+
+
   void
   vmult_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
                            const Vector<double>                 &src,
                            Vector<double>                       &dst)
   {
-    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
-    dst                       = 0;
-    for (int row = 0; row < A.NumMyRows(); ++row)
+    dst = 0;
+    for (types::global_dof_index r = 0; r < stiffness.m(); ++r)
       {
-        int     length;
-        double *values;
-        int    *columns;
-        A.ExtractMyRowView(row, length, values, columns);
-        double sum = 0;
-        for (int e = 0; e < length; ++e)
-          sum += values[e] * src(columns[e]);
-        dst(row) = sum;
+        const StiffnessRow row = stiffness_row(stiffness, r);
+        double             sum = 0;
+        for (int e = 0; e < row.length; ++e)
+          sum += row.values[e] * src(row.columns[e]);
+        dst(r) = sum;
       }
   }
 
@@ -65,16 +81,12 @@ namespace PolyFrac
   copy_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
                           SparseMatrix<double>                 &matrix)
   {
-    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
-    for (int row = 0; row < A.NumMyRows(); ++row)
+    for (types::global_dof_index r = 0; r < stiffness.m(); ++r)
       {
-        int     length;
-        double *values;
-        int    *columns;
-        A.ExtractMyRowView(row, length, values, columns);
-        for (int e = 0; e < length; ++e)
-          if (values[e] != 0.)
-            matrix.set(row, columns[e], values[e]);
+        const StiffnessRow row = stiffness_row(stiffness, r);
+        for (int e = 0; e < row.length; ++e)
+          if (row.values[e] != 0.)
+            matrix.set(r, row.columns[e], row.values[e]);
       }
   }
 

@@ -154,17 +154,6 @@ namespace PolyFrac
     static std::vector<bool>
     kinematic_rows(const FaceLinearisation<dim> &face);
 
-    /** A row of A: Epetra's arrays of its (sorted) columns and values. */
-    struct StiffnessRow
-    {
-      int           length;
-      const int    *columns;
-      const double *values;
-    };
-
-    /** Row @p row of A (in serial, Epetra's local indices are the dofs). */
-    StiffnessRow
-    stiffness_row(const types::global_dof_index row) const;
 
     static LocalRows
     local_rows(const FaceLinearisation<dim> &face);

@@ -50,6 +50,27 @@ namespace PolyFrac
                             const std::vector<BlockCoefficients> &jumps,
                             SparsityPattern                      &pattern);
 
+  /** A row of a Trilinos matrix: Epetra's arrays of its (sorted) columns
+   * and of its values. */
+  struct StiffnessRow
+  {
+    /** The number of entries. */
+    int length;
+    /** Their column indices. */
+    const int *columns;
+    /** Their values. */
+    const double *values;
+  };
+
+  /**
+   * Row @p row of @p matrix, without a copy. The column indices are
+   * Epetra's local ones, which are the dofs on one process (ContactMechanics
+   * checks it once in the Debug build).
+   */
+  StiffnessRow
+  stiffness_row(const TrilinosWrappers::SparseMatrix &matrix,
+                const types::global_dof_index         row);
+
   /**
    * @p dst = A @p src on the displacement rows of the saddle-point system,
    * zero on the multiplier rows, for A stored as a Trilinos matrix on the
