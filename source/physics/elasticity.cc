@@ -273,8 +273,14 @@ namespace PolyFrac
   {
     AffineConstraints<double> none;
     none.close();
-    assemble_cells(none, system_matrix, system_rhs);
+    // The matrix has the displacement rows only, the right-hand side may be
+    // longer (the saddle-point system): the cell loads go through a vector
+    // of the matrix's size.
+    Vector<double> cell_loads(system_matrix.m());
+    assemble_cells(none, system_matrix, cell_loads);
     system_matrix.compress(VectorOperation::add);
+    for (types::global_dof_index i = 0; i < cell_loads.size(); ++i)
+      system_rhs(i) += cell_loads(i);
     assemble_face_loads(none, system_rhs, false);
   }
 

@@ -174,7 +174,8 @@ namespace PolyFrac
 
     /**
      * The same, into a Trilinos matrix of the displacement dofs (built on
-     * a pattern that holds the cell blocks), which is compressed.
+     * a pattern that holds the cell blocks), which is compressed;
+     * @p system_rhs may be longer than the matrix.
      */
     void
     assemble_operator(TrilinosWrappers::SparseMatrix &system_matrix,
