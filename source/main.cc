@@ -12,6 +12,7 @@
 #include <polyfrac/app/simulator.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <new>
 #include <sstream>
@@ -125,6 +126,30 @@ namespace
     setenv("OMPI_MCA_pml", "ob1", 0);
     setenv("OMPI_MCA_btl", "self,vader", 0);
   }
+
+  /**
+   * Prints why the run stopped and returns the exit status 1. Under mpirun
+   * the rank that stops (the first, if several do) names itself and stops
+   * the others, which might otherwise wait for it forever.
+   */
+  int
+  stop(const std::string &why)
+  {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    const unsigned int n_ranks =
+      initialized ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
+    if (n_ranks == 1)
+      {
+        std::cerr << "\nPolyFrac stopped: " << why << std::endl;
+        return 1;
+      }
+    std::cerr << "\nPolyFrac stopped on rank "
+              << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of "
+              << n_ranks << ": " << why << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
 } // namespace
 
 
@@ -164,34 +189,36 @@ main(int argc, char **argv)
         Parameters::from_command_line(argc,
                                       argv,
                                       source_dir + "/prm/default.prm");
+      // Rank 0 prints; the others write to /dev/null.
+      std::ofstream elsewhere;
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        elsewhere.open("/dev/null");
+      std::ostream &out =
+        Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
+                                                                elsewhere;
       if (prm.dim == 2)
-        Simulator<2>(prm).run(std::cout);
+        Simulator<2>(prm).run(out);
       else
-        Simulator<3>(prm).run(std::cout);
+        Simulator<3>(prm).run(out);
     }
   catch (const ExceptionBase &e)
     {
       std::ostringstream info;
       e.print_info(info);
-      std::cerr << "\nPolyFrac stopped: " << Utilities::trim(info.str())
-                << std::endl;
-      return 1;
+      return stop(Utilities::trim(info.str()));
     }
   catch (const std::bad_alloc &)
     {
-      std::cerr
-        << "\nPolyFrac stopped: out of memory (std::bad_alloc). The mesh or "
-           "its linear systems need more memory than this machine has: "
-           "lower Mesh/Subdivisions, Mesh/Global refinements or Convergence "
-           "study/Number of refinement levels, or use Linear solver/Method = "
-           "AMG (UMFPACK's factors need the most memory)."
-        << std::endl;
-      return 1;
+      return stop(
+        "out of memory (std::bad_alloc). The mesh or "
+        "its linear systems need more memory than this machine has: "
+        "lower Mesh/Subdivisions, Mesh/Global refinements or Convergence "
+        "study/Number of refinement levels, or use Linear solver/Method = "
+        "AMG (UMFPACK's factors need the most memory).");
     }
   catch (const std::exception &e)
     {
-      std::cerr << "\nPolyFrac stopped: " << e.what() << std::endl;
-      return 1;
+      return stop(e.what());
     }
   return 0;
 }

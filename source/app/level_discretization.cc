@@ -72,7 +72,8 @@ namespace PolyFrac
 
   template <int dim>
   LevelDiscretization<dim>::LevelDiscretization(const Parameters  &prm,
-                                                const unsigned int level)
+                                                const unsigned int level,
+                                                const MPI_Comm     communicator)
   {
     // The fractures are either planar Fracture objects located
     // geometrically (generated box) or the tagged elements of a gmsh mesh.
@@ -94,6 +95,7 @@ namespace PolyFrac
       MeshBuilder::make_box(prm, level, triangulation);
     MeshBuilder::refine_in_box(prm, triangulation);
     build_on_triangulation(prm,
+                           communicator,
                            !gmsh_as_read ?
                              GmshMesh<dim>() :
                            prm.mesh.local_refinements == 0 ?
@@ -128,6 +130,7 @@ namespace PolyFrac
                                                     0);
     triangulation.execute_coarsening_and_refinement();
     build_on_triangulation(prm,
+                           coarser.dofs->get_communicator(),
                            gmsh_as_read ?
                              fracture_elements_after_refinement(*gmsh_as_read,
                                                                 triangulation) :
@@ -140,6 +143,7 @@ namespace PolyFrac
   void
   LevelDiscretization<dim>::build_on_triangulation(
     const Parameters    &prm,
+    const MPI_Comm       communicator,
     const GmshMesh<dim> &gmsh_elements)
   {
     const bool                       from_gmsh = gmsh_as_read != nullptr;
@@ -181,6 +185,12 @@ namespace PolyFrac
                                          prm.contact.split_bubbles ?
                                                BubblePlacement::split :
                                                BubblePlacement::plus_side);
+    if (const unsigned int n_ranks =
+          Utilities::MPI::job_supports_mpi() ?
+            Utilities::MPI::n_mpi_processes(communicator) :
+            1;
+        n_ranks > 1)
+      dofs->distribute_among_ranks(communicator, mesh->partition(n_ranks));
   }
 
 
@@ -197,6 +207,7 @@ namespace PolyFrac
       if (histogram[k] > 0)
         out << ' ' << k << " side" << (k > 1 ? "s: " : ": ") << histogram[k];
     out << "); bubbles: " << dofs->n_bubbles() << std::endl;
+    dofs->print_partition(out);
   }
 
 

@@ -23,11 +23,13 @@ namespace PolyFrac
   {
   public:
     /** The files of @p level of the scene of @p prm; @p with_fractures: the
-     * mesh has fracture faces; @p time_series: the model is time-dependent. */
+     * mesh has fracture faces; @p time_series: the model is time-dependent
+     * (its csv is written by rank 0 of @p communicator). */
     LevelOutput(const Parameters  &prm,
                 const unsigned int level,
                 const bool         with_fractures,
-                const bool         time_series);
+                const bool         time_series,
+                const MPI_Comm     communicator);
 
     /** Writes the state of @p model at time @p t as the next VTU step (if
      * Output/Write VTU). */
@@ -83,7 +85,8 @@ namespace PolyFrac
   Simulator<dim>::LevelOutput::LevelOutput(const Parameters  &prm,
                                            const unsigned int level,
                                            const bool         with_fractures,
-                                           const bool         time_series)
+                                           const bool         time_series,
+                                           const MPI_Comm     communicator)
     : prm(prm)
   {
     const std::string level_name = "-level-" + std::to_string(level);
@@ -92,13 +95,16 @@ namespace PolyFrac
       {
         solution.emplace(prm.output.directory,
                          "solution" + level_name,
-                         compression);
+                         compression,
+                         communicator);
         if (with_fractures)
           fractures.emplace(prm.output.directory,
                             "fractures" + level_name,
-                            compression);
+                            compression,
+                            communicator);
       }
-    if (time_series)
+    if (time_series && (!Utilities::MPI::job_supports_mpi() ||
+                        Utilities::MPI::this_mpi_process(communicator) == 0))
       {
         time_series_name = "time_series" + level_name + ".csv";
         this->time_series.emplace(prm.output.directory + "/" +
@@ -184,9 +190,12 @@ namespace PolyFrac
 
 
   template <int dim>
-  Simulator<dim>::Simulator(const Parameters &prm, ModelFactory factory)
+  Simulator<dim>::Simulator(const Parameters &prm,
+                            ModelFactory      factory,
+                            const MPI_Comm    communicator)
     : prm(prm)
     , factory(std::move(factory))
+    , communicator(communicator)
   {}
 
 
@@ -198,8 +207,20 @@ namespace PolyFrac
     for (const std::string &warning : prm.warnings)
       out << "Warning: " << warning << std::endl;
     check_memory(prm);
-    prm.create_output_directory();
-    prm.write_used_parameters(prm.output.directory + "/used_parameters.prm");
+    check_distributable();
+    const bool mpi = Utilities::MPI::job_supports_mpi();
+    const bool root =
+      !mpi || Utilities::MPI::this_mpi_process(communicator) == 0;
+    if (root)
+      {
+        prm.create_output_directory();
+        prm.write_used_parameters(prm.output.directory +
+                                  "/used_parameters.prm");
+      }
+    // The other ranks write their pieces once rank 0 has made the
+    // directory (if it cannot, main() stops them all).
+    if (mpi)
+      MPI_Barrier(communicator);
     written_files = {"used_parameters.prm"};
 
     // Wall times per section, summed over the levels; printed only on
@@ -208,8 +229,11 @@ namespace PolyFrac
     for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
       {
         rows.push_back(run_level(level, timer, out));
-        std::ofstream csv(prm.output.directory + "/convergence.csv");
-        write_convergence_table(csv, rows, false, true);
+        if (root)
+          {
+            std::ofstream csv(prm.output.directory + "/convergence.csv");
+            write_convergence_table(csv, rows, false, true);
+          }
       }
     written_files.push_back("convergence.csv");
     out << std::endl;
@@ -221,6 +245,30 @@ namespace PolyFrac
       out << ' ' << name;
     out << std::endl;
     report_checks(out);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_distributable() const
+  {
+    if (!Utilities::MPI::job_supports_mpi())
+      return;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    if (n_ranks == 1)
+      return;
+    const std::string where = "In <" + prm.file_name + ">, run on " +
+                              std::to_string(n_ranks) + " MPI ranks: ";
+    AssertThrow(prm.model == "elasticity",
+                ExcMessage(where + "Model = " + prm.model +
+                           " runs on one rank only so far (Model = "
+                           "elasticity runs on several). Run it without "
+                           "mpirun, or with mpirun -np 1."));
+    AssertThrow(prm.mesh.refinement != "adaptive",
+                ExcMessage(where + "Mesh/Refinement = adaptive runs on one "
+                                   "rank only so far. Run it without mpirun, "
+                                   "or use Mesh/Refinement = uniform."));
   }
 
 
@@ -261,7 +309,7 @@ namespace PolyFrac
         std::make_unique<LevelDiscretization<dim>>(prm,
                                                    *coarser_discretization,
                                                    coarser_indicators) :
-        std::make_unique<LevelDiscretization<dim>>(prm, level);
+        std::make_unique<LevelDiscretization<dim>>(prm, level, communicator);
     // Only an adaptive cycle refines the triangulation again: otherwise it
     // goes before the model is built (0.17 KB per unknown at the 3D peak,
     // benchmarks/README.md, "Memory budget").
@@ -284,7 +332,8 @@ namespace PolyFrac
     LevelOutput                       output(prm,
                        level,
                        discretization.network->n_fracture_faces() > 0,
-                       model->is_time_dependent());
+                       model->is_time_dependent(),
+                       communicator);
     const std::optional<unsigned int> newton_iterations =
       run_steps(level, *model, output, timer, out);
     coarser = model->level_start();

@@ -66,6 +66,81 @@ namespace PolyFrac
             cell_node_sides[cells[i]][local] = it->second;
           }
       }
+    owned_dofs    = complete_index_set(n_displacement_dofs());
+    relevant_dofs = owned_dofs;
+  }
+
+
+
+  template <int dim>
+  void
+  DoFMap<dim>::distribute_among_ranks(
+    const MPI_Comm                   communicator,
+    const std::vector<unsigned int> &polytope_owners)
+  {
+    AssertDimension(polytope_owners.size(), n_cells());
+    this->communicator = communicator;
+    n_ranks            = Utilities::MPI::n_mpi_processes(communicator);
+    this_rank          = Utilities::MPI::this_mpi_process(communicator);
+    cell_owners        = polytope_owners;
+
+    owned_dofs.clear();
+    owned_dofs.set_size(n_displacement_dofs());
+    relevant_dofs        = owned_dofs;
+    const auto add_block = [](IndexSet                     &set,
+                              const types::global_dof_index first) {
+      set.add_range(first, first + dim);
+    };
+    for (unsigned int n = 0; n < n_node_sides(); ++n)
+      {
+        unsigned int owner = numbers::invalid_unsigned_int;
+        for (const unsigned int c : node_sides[n].cells)
+          owner = std::min(owner, cell_owners[c]);
+        if (owner == this_rank)
+          add_block(owned_dofs, node_side_dof(n, 0));
+      }
+    for (unsigned int i = 0; i < n_bubbles(); ++i)
+      if (is_locally_owned_fracture_face(i))
+        add_block(owned_dofs, bubble_dof(i, 0));
+    owned_dofs.compress();
+
+    std::vector<types::global_dof_index> relevant;
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      if (is_locally_owned_cell(c))
+        {
+          const auto local = cell_dofs(c);
+          relevant.insert(relevant.end(), local.begin(), local.end());
+        }
+    std::sort(relevant.begin(), relevant.end());
+    relevant.erase(std::unique(relevant.begin(), relevant.end()),
+                   relevant.end());
+    relevant_dofs.add_indices(relevant.begin(), relevant.end());
+    relevant_dofs.add_indices(owned_dofs);
+    relevant_dofs.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  DoFMap<dim>::print_partition(std::ostream &out) const
+  {
+    if (!is_distributed())
+      return;
+    const unsigned int n_owned_cells =
+      std::count(cell_owners.begin(), cell_owners.end(), this_rank);
+    const auto cells = Utilities::MPI::gather(communicator, n_owned_cells);
+    const auto dofs =
+      Utilities::MPI::gather(communicator, owned_dofs.n_elements());
+    if (this_rank != 0)
+      return;
+    out << "Partition: " << cells.size() << " ranks; polytopes per rank";
+    for (const unsigned int n : cells)
+      out << ' ' << n;
+    out << "; displacement unknowns per rank";
+    for (const auto n : dofs)
+      out << ' ' << n;
+    out << std::endl;
   }
 
 

@@ -181,6 +181,8 @@ namespace PolyFrac
     for (const auto &fine : mesh.fine_cells)
       {
         const unsigned int K = fine.polytope;
+        if (!dofs.is_locally_owned_cell(K))
+          continue;
         if (K != cached)
           {
             cell_values.clear();
@@ -259,39 +261,41 @@ namespace PolyFrac
     const unsigned int      n_components = data.names.size();
 
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      {
-        const auto          &ff     = network.fracture_faces[i];
-        const Tensor<1, dim> n      = network.normal(i);
-        std::vector<double>  values = {static_cast<double>(ff.fracture)};
-        append(values, n);
-        if (state != nullptr)
-          {
-            const Tensor<1, dim> u =
-              state->jump_value(geometry, dofs, network, i);
-            const Tensor<1, dim> lambda = state->multipliers[i];
-            append(values, u);
-            values.push_back(u * n);
-            append(values, u - (u * n) * n);
-            append(values, lambda);
-            values.push_back(lambda * n);
-            append(values, lambda - (lambda * n) * n);
-          }
-        if (with_states)
-          {
-            values.push_back(static_cast<int>(state->contact.normal[i]));
-            values.push_back(static_cast<int>(state->contact.tangential[i]));
-          }
-        for (const ScalarField &field : face_fields)
-          values.push_back(field.values[i]);
-        for (const auto &[type, vertices] :
-             face_pieces(geometry.mesh.vertices,
-                         geometry.mesh.faces[ff.face].vertices))
-          {
-            auto patch = make_patch<dim - 1, dim>(type, vertices, n_components);
-            set_constant(patch, 0, values);
-            data.patches.push_back(std::move(patch));
-          }
-      }
+      if (dofs.is_locally_owned_fracture_face(i))
+        {
+          const auto          &ff     = network.fracture_faces[i];
+          const Tensor<1, dim> n      = network.normal(i);
+          std::vector<double>  values = {static_cast<double>(ff.fracture)};
+          append(values, n);
+          if (state != nullptr)
+            {
+              const Tensor<1, dim> u =
+                state->jump_value(geometry, dofs, network, i);
+              const Tensor<1, dim> lambda = state->multipliers[i];
+              append(values, u);
+              values.push_back(u * n);
+              append(values, u - (u * n) * n);
+              append(values, lambda);
+              values.push_back(lambda * n);
+              append(values, lambda - (lambda * n) * n);
+            }
+          if (with_states)
+            {
+              values.push_back(static_cast<int>(state->contact.normal[i]));
+              values.push_back(static_cast<int>(state->contact.tangential[i]));
+            }
+          for (const ScalarField &field : face_fields)
+            values.push_back(field.values[i]);
+          for (const auto &[type, vertices] :
+               face_pieces(geometry.mesh.vertices,
+                           geometry.mesh.faces[ff.face].vertices))
+            {
+              auto patch =
+                make_patch<dim - 1, dim>(type, vertices, n_components);
+              set_constant(patch, 0, values);
+              data.patches.push_back(std::move(patch));
+            }
+        }
     sort_along_hilbert_curve(data.patches);
     return data;
   }
@@ -301,9 +305,11 @@ namespace PolyFrac
   VtuSeries::VtuSeries(
     const std::string                                &directory,
     const std::string                                &name,
-    const DataOutBase::VtkFlags::ZlibCompressionLevel compression)
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression,
+    const MPI_Comm                                    communicator)
     : directory(directory)
     , name(name)
+    , communicator(communicator)
   {
     flags.print_date_and_time = false;
     flags.compression_level   = compression;
@@ -315,15 +321,43 @@ namespace PolyFrac
   void
   VtuSeries::write(const PatchData<dim, spacedim> &data, const double time)
   {
-    const std::string file_name =
-      name + '-' + Utilities::int_to_string(times_and_names.size(), 4) + ".vtu";
-    const std::filesystem::path path =
-      std::filesystem::path(directory) / file_name;
-    std::ofstream out(path);
-    AssertThrow(out, ExcMessage("Cannot write <" + path.string() + ">."));
+    const std::string step =
+      name + '-' + Utilities::int_to_string(times_and_names.size(), 4);
+    const bool         mpi = Utilities::MPI::job_supports_mpi();
+    const unsigned int n_ranks =
+      mpi ? Utilities::MPI::n_mpi_processes(communicator) : 1;
+    const unsigned int rank =
+      mpi ? Utilities::MPI::this_mpi_process(communicator) : 0;
+    const auto piece_name = [&](const unsigned int r) {
+      return n_ranks == 1 ?
+               step + ".vtu" :
+               step + '.' + Utilities::int_to_string(r, 4) + ".vtu";
+    };
+    const auto open = [&](const std::string &file_name) {
+      const std::filesystem::path path =
+        std::filesystem::path(directory) / file_name;
+      auto out = std::make_unique<std::ofstream>(path);
+      AssertThrow(*out, ExcMessage("Cannot write <" + path.string() + ">."));
+      return out;
+    };
     flags.time = time;
-    DataOutBase::write_vtu(data.patches, data.names, data.ranges, flags, out);
+    DataOutBase::write_vtu(
+      data.patches, data.names, data.ranges, flags, *open(piece_name(rank)));
+    const std::string file_name = n_ranks == 1 ? piece_name(0) : step + ".pvtu";
     times_and_names.emplace_back(time, file_name);
+    if (n_ranks > 1)
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        pieces.push_back(piece_name(r));
+    if (rank != 0)
+      return;
+    if (n_ranks > 1)
+      {
+        std::vector<std::string> piece_names;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          piece_names.push_back(piece_name(r));
+        DataOutBase::write_pvtu_record(
+          *open(file_name), piece_names, data.names, data.ranges, flags);
+      }
 
     // deal.II 9.4 stamps the record with the date in a comment: drop it,
     // so that the same run writes the same bytes.
@@ -349,6 +383,7 @@ namespace PolyFrac
     std::vector<std::string> names;
     for (const auto &[time, file_name] : times_and_names)
       names.push_back(file_name);
+    names.insert(names.end(), pieces.begin(), pieces.end());
     if (!names.empty())
       names.push_back(name + ".pvd");
     return names;

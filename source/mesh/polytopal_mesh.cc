@@ -1,6 +1,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
@@ -274,6 +277,28 @@ namespace PolyFrac
       for (const unsigned int v : cells[c].vertices)
         result[v].push_back(c);
     return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  PolytopalMesh<dim>::partition(const unsigned int n_parts) const
+  {
+    std::vector<unsigned int> part(n_cells(), 0);
+    if (n_parts == 1)
+      return part;
+    DynamicSparsityPattern graph(n_cells());
+    for (const Face &face : faces)
+      if (!face.at_boundary())
+        {
+          graph.add(face.cells[0], face.cells[1]);
+          graph.add(face.cells[1], face.cells[0]);
+        }
+    SparsityPattern sparsity;
+    sparsity.copy_from(graph);
+    SparsityTools::partition(sparsity, n_parts, part);
+    return part;
   }
 
 

@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/physics/amg_solver.h>
 
@@ -49,12 +50,12 @@ namespace PolyFrac
       for (unsigned int n = 0; n < dofs.n_node_sides(); ++n)
         {
           const auto row = [&](const unsigned int c) {
-            const int local =
-              map.LID(static_cast<TrilinosWrappers::types::int_type>(
-                dofs.node_side_dof(n, c)));
-            Assert(local >= 0, ExcInternalError());
-            return local;
+            return map.LID(static_cast<TrilinosWrappers::types::int_type>(
+              dofs.node_side_dof(n, c)));
           };
+          // Distributed, the node sides of other ranks are not rows here.
+          if (row(0) < 0)
+            continue;
           for (unsigned int c = 0; c < dim; ++c)
             (*modes)[c][row(c)] = 1.;
           if (!rotations)
@@ -133,11 +134,12 @@ namespace PolyFrac
 
 
 
+  template <typename VectorType>
   std::pair<unsigned int, bool>
   solve_krylov(const bool                               symmetric,
                const TrilinosWrappers::SparseMatrix    &matrix,
-               Vector<double>                          &x,
-               const Vector<double>                    &rhs,
+               VectorType                              &x,
+               const VectorType                        &rhs,
                const TrilinosWrappers::PreconditionAMG &amg,
                const Parameters::SolverData            &solver,
                const double                             enough)
@@ -147,11 +149,12 @@ namespace PolyFrac
     try
       {
         if (symmetric)
-          SolverCG<Vector<double>>(control).solve(matrix, x, rhs, amg);
+          SolverCG<VectorType>(control).solve(matrix, x, rhs, amg);
         else
-          SolverGMRES<Vector<double>>(
+          SolverGMRES<VectorType>(
             control,
-            SolverGMRES<Vector<double>>::AdditionalData(gmres_restart, true))
+            typename SolverGMRES<VectorType>::AdditionalData(gmres_restart,
+                                                             true))
             .solve(matrix, x, rhs, amg);
       }
     catch (const SolverControl::NoConvergence &)
@@ -163,11 +166,11 @@ namespace PolyFrac
 
 
 
-  template <int dim>
+  template <int dim, typename VectorType>
   unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &matrix,
-               Vector<double>                       &x,
-               const Vector<double>                 &rhs,
+               VectorType                           &x,
+               const VectorType                     &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
                const Parameters::SolverData         &solver)
@@ -199,13 +202,6 @@ namespace PolyFrac
                  const std::vector<Point<2>> &,
                  const unsigned int,
                  const AMGHierarchy);
-  template unsigned int
-  solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
-               Vector<double> &,
-               const Vector<double> &,
-               const DoFMap<2> &,
-               const std::vector<Point<2>> &,
-               const Parameters::SolverData &);
   template void
   initialize_amg(TrilinosWrappers::PreconditionAMG &,
                  const TrilinosWrappers::SparseMatrix &,
@@ -213,10 +209,47 @@ namespace PolyFrac
                  const std::vector<Point<3>> &,
                  const unsigned int,
                  const AMGHierarchy);
+  template std::pair<unsigned int, bool>
+  solve_krylov(const bool,
+               const TrilinosWrappers::SparseMatrix &,
+               Vector<double> &,
+               const Vector<double> &,
+               const TrilinosWrappers::PreconditionAMG &,
+               const Parameters::SolverData &,
+               const double);
+  template std::pair<unsigned int, bool>
+  solve_krylov(const bool,
+               const TrilinosWrappers::SparseMatrix &,
+               TrilinosWrappers::MPI::Vector &,
+               const TrilinosWrappers::MPI::Vector &,
+               const TrilinosWrappers::PreconditionAMG &,
+               const Parameters::SolverData &,
+               const double);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
                const Vector<double> &,
+               const DoFMap<2> &,
+               const std::vector<Point<2>> &,
+               const Parameters::SolverData &);
+  template unsigned int
+  solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
+               Vector<double> &,
+               const Vector<double> &,
+               const DoFMap<3> &,
+               const std::vector<Point<3>> &,
+               const Parameters::SolverData &);
+  template unsigned int
+  solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
+               TrilinosWrappers::MPI::Vector &,
+               const TrilinosWrappers::MPI::Vector &,
+               const DoFMap<2> &,
+               const std::vector<Point<2>> &,
+               const Parameters::SolverData &);
+  template unsigned int
+  solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
+               TrilinosWrappers::MPI::Vector &,
+               const TrilinosWrappers::MPI::Vector &,
                const DoFMap<3> &,
                const std::vector<Point<3>> &,
                const Parameters::SolverData &);

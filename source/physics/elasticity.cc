@@ -1,7 +1,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/base/cell_loop.h>
 #include <polyfrac/base/expressions.h>
@@ -220,6 +223,7 @@ namespace PolyFrac
   {
     make_constraints();
     direct.reset();
+    distributed_direct.reset();
     const auto                   &mesh   = geometry.mesh;
     const types::global_dof_index n_dofs = dofs.n_displacement_dofs();
 
@@ -227,27 +231,49 @@ namespace PolyFrac
     // The pattern and the matrix are made while the first cells are
     // computed (cell_loop_after()); the dynamic pattern is freed before the
     // other cells are.
+    // Distributed, both methods assemble a Trilinos matrix whose rows each
+    // rank owns; the right-hand side is summed over the ranks.
+    const bool trilinos =
+      prm.solver.method != "direct" || dofs.is_distributed();
     const auto make_matrix = [&]() {
+      if (dofs.is_distributed())
+        {
+          TrilinosWrappers::SparsityPattern pattern(
+            dofs.locally_owned_dofs(),
+            dofs.locally_owned_dofs(),
+            dofs.locally_relevant_dofs(),
+            dofs.get_communicator());
+          for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+            if (dofs.is_locally_owned_cell(c))
+              constraints.add_entries_local_to_global(dofs.cell_dofs(c),
+                                                      pattern,
+                                                      false);
+          pattern.compress();
+          trilinos_matrix.reinit(pattern);
+          return;
+        }
       DynamicSparsityPattern dsp(n_dofs);
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         constraints.add_entries_local_to_global(dofs.cell_dofs(c), dsp, false);
-      if (prm.solver.method == "direct")
+      if (trilinos)
+        trilinos_matrix.reinit(dsp);
+      else
         {
           sparsity.copy_from(dsp);
           matrix.reinit(sparsity);
         }
-      else
-        trilinos_matrix.reinit(dsp);
     };
-    if (prm.solver.method == "direct")
-      assemble_cells(constraints, matrix, rhs, make_matrix);
-    else
+    if (trilinos)
       {
         assemble_cells(constraints, trilinos_matrix, rhs, make_matrix);
         trilinos_matrix.compress(VectorOperation::add);
       }
+    else
+      assemble_cells(constraints, matrix, rhs, make_matrix);
 
     assemble_face_loads(constraints, rhs, true);
+    if (dofs.is_distributed())
+      Utilities::MPI::sum(rhs, dofs.get_communicator(), rhs);
   }
 
 
@@ -309,8 +335,10 @@ namespace PolyFrac
       c.distribute_local_to_global(b, face_dofs, system_rhs);
     };
 
+    // Each face load is added by one rank: the owner of its cell or face.
     for (unsigned int f = 0; f < mesh.n_faces(); ++f)
-      if (on_neumann_boundary(f))
+      if (on_neumann_boundary(f) &&
+          dofs.is_locally_owned_cell(mesh.faces[f].cells[0]))
         {
           Vector<double> g(dim);
           neumann->vector_value(geometry.faces[f].centroid, g);
@@ -322,16 +350,17 @@ namespace PolyFrac
         }
 
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      {
-        const unsigned int   f = network.fracture_faces[i].face;
-        const Tensor<1, dim> load =
-          -geometry.faces[f].measure *
-          ((with_prescribed_traction ? prescribed_traction(i) :
-                                       Tensor<1, dim>()) +
-           fracture_pressure->value(geometry.faces[f].centroid) *
-             network.normal(i));
-        add_face_load(jump(geometry, dofs, network, i), load);
-      }
+      if (dofs.is_locally_owned_fracture_face(i))
+        {
+          const unsigned int   f = network.fracture_faces[i].face;
+          const Tensor<1, dim> load =
+            -geometry.faces[f].measure *
+            ((with_prescribed_traction ? prescribed_traction(i) :
+                                         Tensor<1, dim>()) +
+             fracture_pressure->value(geometry.faces[f].centroid) *
+               network.normal(i));
+          add_face_load(jump(geometry, dofs, network, i), load);
+        }
   }
 
 
@@ -366,6 +395,9 @@ namespace PolyFrac
               return make_initial_stress(t);
             })},
       [this](const unsigned int cell, Loads &loads, CellSystem &copy) {
+        copy.dofs.clear();
+        if (!dofs.is_locally_owned_cell(cell))
+          return;
         const LocalReconstruction<dim> local(geometry, dofs, network, cell);
         copy.stiffness = local_stiffness(local);
         copy.load =
@@ -373,8 +405,9 @@ namespace PolyFrac
         copy.dofs = dofs.cell_dofs(cell);
       },
       [&](const CellSystem &copy) {
-        c.distribute_local_to_global(
-          copy.stiffness, copy.load, copy.dofs, system_matrix, system_rhs);
+        if (!copy.dofs.empty())
+          c.distribute_local_to_global(
+            copy.stiffness, copy.load, copy.dofs, system_matrix, system_rhs);
       });
   }
 
@@ -510,7 +543,9 @@ namespace PolyFrac
     Vector<double> &u = state.displacement;
     u.reinit(dofs.n_displacement_dofs());
     unsigned int iterations = 0;
-    if (prm.solver.method == "direct")
+    if (dofs.is_distributed())
+      iterations = solve_distributed(load, u);
+    else if (prm.solver.method == "direct")
       {
         if (!direct)
           {
@@ -528,6 +563,40 @@ namespace PolyFrac
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       state.multipliers.push_back(prescribed_traction(i));
     state.contact = ContactStates();
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Elasticity<dim>::solve_distributed(const Vector<double> &load,
+                                     Vector<double>       &u)
+  {
+    const MPI_Comm                communicator = dofs.get_communicator();
+    TrilinosWrappers::MPI::Vector b(dofs.locally_owned_dofs(), communicator);
+    TrilinosWrappers::MPI::Vector x(b);
+    for (const auto i : dofs.locally_owned_dofs())
+      b(i) = load(i);
+    b.compress(VectorOperation::insert);
+    unsigned int iterations = 0;
+    if (prm.solver.method == "direct")
+      {
+        if (!distributed_direct)
+          {
+            distributed_direct =
+              std::make_unique<TrilinosWrappers::SolverDirect>(
+                direct_control,
+                TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                               "Amesos_Mumps"));
+            distributed_direct->initialize(trilinos_matrix);
+          }
+        distributed_direct->solve(x, b);
+      }
+    else
+      iterations = solve_cg_amg(
+        trilinos_matrix, x, b, dofs, geometry.mesh.vertices, prm.solver);
+    u = Vector<double>(x);
     return iterations;
   }
 

@@ -1,4 +1,6 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
 
 #include <polyfrac/base/cell_loop.h>
 #include <polyfrac/base/expressions.h>
@@ -23,32 +25,39 @@ namespace PolyFrac
     /**
      * Face-centroid errors of a fracture field: Σ_σ |σ| |e_σ|²,
      * Σ_σ h_σ |σ| |e_σ|² and Σ_σ |σ| |exact(x̄_σ)|², with e_σ =
-     * exact(x̄_σ) − discrete(i) on fracture face i.
+     * exact(x̄_σ) − discrete(i) on fracture face i; each rank sums its own
+     * faces (@p dofs), and the sums are those of all ranks.
      */
     template <int dim, typename DiscreteField>
     std::array<double, 3>
     fracture_face_errors(const Function<dim>        &exact,
                          const MeshGeometry<dim>    &geometry,
                          const FractureNetwork<dim> &network,
+                         const DoFMap<dim>          &dofs,
                          const DiscreteField        &discrete)
     {
       std::array<double, 3> sums = {{0., 0., 0.}};
       Vector<double>        value(dim);
       for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-        {
-          const auto &face = geometry.faces[network.fracture_faces[i].face];
-          exact.vector_value(face.centroid, value);
-          const Tensor<1, dim> field      = discrete(i);
-          double               difference = 0, norm = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              difference += std::pow(value(d) - field[d], 2);
-              norm += value(d) * value(d);
-            }
-          sums[0] += face.measure * difference;
-          sums[1] += face.diameter * face.measure * difference;
-          sums[2] += face.measure * norm;
-        }
+        if (dofs.is_locally_owned_fracture_face(i))
+          {
+            const auto &face = geometry.faces[network.fracture_faces[i].face];
+            exact.vector_value(face.centroid, value);
+            const Tensor<1, dim> field      = discrete(i);
+            double               difference = 0, norm = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                difference += std::pow(value(d) - field[d], 2);
+                norm += value(d) * value(d);
+              }
+            sums[0] += face.measure * difference;
+            sums[1] += face.diameter * face.measure * difference;
+            sums[2] += face.measure * norm;
+          }
+      if (dofs.is_distributed())
+        Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
+                            dofs.get_communicator(),
+                            ArrayView<double>(sums.data(), sums.size()));
       return sums;
     }
 
@@ -160,13 +169,15 @@ namespace PolyFrac
             return exact_field<dim>(prm, false, prm.exact.displacement, time);
           }),
           [&](const unsigned int c, PerThreadFunction<dim> &own, Sums &sums) {
+            sums.fill(0.);
+            if (!dofs.is_locally_owned_cell(c))
+              return;
             const Function<dim>           &exact_u = own.get();
             const LocalReconstruction<dim> local(geometry, dofs, network, c);
             const auto                     values = state.local_values(dofs, c);
             const Tensor<2, dim>           grad_h = local.gradient(values);
             Vector<double>                 u(dim);
             std::vector<Tensor<1, dim>>    grad_u(dim);
-            sums.fill(0.);
             for (const auto &q : geometry.quadrature(c))
               {
                 exact_u.vector_value(q.point, u);
@@ -185,6 +196,11 @@ namespace PolyFrac
             for (unsigned int k = 0; k < 4; ++k)
               total[k] += sums[k];
           });
+        if (dofs.is_distributed())
+          Utilities::MPI::sum(ArrayView<const double>(total.data(),
+                                                      total.size()),
+                              dofs.get_communicator(),
+                              ArrayView<double>(total.data(), total.size()));
         errors.u      = ratio(total[0], total[1]);
         errors.grad_u = ratio(total[2], total[3]);
       }
@@ -193,7 +209,7 @@ namespace PolyFrac
         const auto exact = exact_jump<dim>(prm);
         exact->set_time(time);
         const auto sums = fracture_face_errors<dim>(
-          *exact, geometry, network, [&](const unsigned int i) {
+          *exact, geometry, network, dofs, [&](const unsigned int i) {
             return state.jump_value(geometry, dofs, network, i);
           });
         errors.jump = ratio(sums[0], sums[2]);
@@ -212,7 +228,7 @@ namespace PolyFrac
           BoundingBox<dim>(geometry.mesh.vertices).get_boundary_points();
         const double diameter = corners.first.distance(corners.second);
         const auto   sums     = fracture_face_errors<dim>(
-          *exact, geometry, network, [&state](const unsigned int i) {
+          *exact, geometry, network, dofs, [&state](const unsigned int i) {
             return state.multipliers[i];
           });
         errors.lambda_l2   = ratio(sums[0], sums[2]);

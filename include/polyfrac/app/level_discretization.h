@@ -35,8 +35,13 @@ namespace PolyFrac
   {
   public:
     /** Builds the mesh of refinement level @p level of the scene of @p prm
-     * and everything on it, in the order of the members below. */
-    LevelDiscretization(const Parameters &prm, const unsigned int level);
+     * and everything on it, in the order of the members below. With more
+     * than one rank in @p communicator, every rank builds the whole level
+     * and its DoF map is distributed among them
+     * (DoFMap::distribute_among_ranks()). */
+    LevelDiscretization(const Parameters  &prm,
+                        const unsigned int level,
+                        const MPI_Comm     communicator = MPI_COMM_SELF);
 
     /**
      * The next cycle of Mesh/Refinement = adaptive: a copy of the
@@ -47,13 +52,14 @@ namespace PolyFrac
      * cells of an agglomerate share its indicator, divided by the square
      * root of their number). Its fractures are those of @p coarser: planar
      * fractures are located again, gmsh fracture elements followed through
-     * the refinement.
+     * the refinement. Its DoF map is distributed like that of @p coarser.
      */
     LevelDiscretization(const Parameters          &prm,
                         const LevelDiscretization &coarser,
                         const Vector<float>       &indicators);
 
-    /** Prints cells, faces, node sides, fractures and the mesh quality. */
+    /** Prints cells, faces, node sides, fractures, the mesh quality and
+     * the partition among ranks (every rank must call it). */
     void
     print_summary(std::ostream &out) const;
 
@@ -76,10 +82,12 @@ namespace PolyFrac
     /**
      * The pipeline after the triangulation: polytopal view, distortion,
      * agglomeration, geometry, fracture network (of the planar fractures of
-     * @p prm, or of the gmsh fracture elements of @p gmsh_elements), DoFs.
+     * @p prm, or of the gmsh fracture elements of @p gmsh_elements), DoFs
+     * distributed among the ranks of @p communicator.
      */
     void
     build_on_triangulation(const Parameters    &prm,
+                           const MPI_Comm       communicator,
                            const GmshMesh<dim> &gmsh_elements);
 
     /** The gmsh mesh as read (its fracture elements are the manifold ids of

@@ -56,6 +56,13 @@ namespace PolyFrac
     PatchData<dim - 1, dim>
     fracture_output() const override;
 
+    /** The displacement of the last step(), whole on every rank. */
+    const Vector<double> &
+    displacement() const
+    {
+      return state.displacement;
+    }
+
   private:
     const Parameters               &prm;
     const LevelDiscretization<dim> &discretization;

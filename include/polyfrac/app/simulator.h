@@ -52,9 +52,12 @@ namespace PolyFrac
       Model<dim>>(const Parameters &, const LevelDiscretization<dim> &)>;
 
     /** The program for the scene of @p prm, which must outlive it, with the
-     * models of @p factory. */
+     * models of @p factory, on the ranks of @p communicator (rank 0 writes
+     * the tables and files; give the others an @p out of run() that drops
+     * what it gets). */
     explicit Simulator(const Parameters &prm,
-                       ModelFactory      factory = make_model<dim>);
+                       ModelFactory      factory      = make_model<dim>,
+                       const MPI_Comm    communicator = MPI_COMM_WORLD);
 
     /** Runs every level: prints the progress and the tables to @p out and
      * writes the outputs to the output directory. */
@@ -88,9 +91,16 @@ namespace PolyFrac
      */
     void
     report_checks(std::ostream &out) const;
+    /** Throws if the scene needs what runs on one rank only so far (a model
+     * other than elasticity, adaptive refinement) and #communicator has
+     * more. */
+    void
+    check_distributable() const;
 
-    const Parameters           &prm;
-    const ModelFactory          factory;
+    const Parameters  &prm;
+    const ModelFactory factory;
+    /** The ranks that share the run. */
+    const MPI_Comm              communicator;
     std::vector<ConvergenceRow> rows;
     /** The files written to the output directory, in order. */
     std::vector<std::string> written_files;

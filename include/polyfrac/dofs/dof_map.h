@@ -1,6 +1,8 @@
 #ifndef polyfrac_dofs_dof_map_h
 #define polyfrac_dofs_dof_map_h
 
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 
 #include <polyfrac/dofs/dof_block.h>
@@ -8,6 +10,7 @@
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
+#include <ostream>
 #include <vector>
 
 namespace PolyFrac
@@ -49,6 +52,11 @@ namespace PolyFrac
    * Component c of node side n is dof dim n + c; of the bubble of
    * fracture face i, dim (n_node_sides + i) + c.
    *
+   * Among the ranks of an MPI communicator (distribute_among_ranks()), every
+   * rank holds the whole map, and each polytope, node side and fracture face
+   * is owned by one rank: the numbering stays that of one rank, so that the
+   * unknowns of a distributed run are those of a serial one.
+   *
    * @code
    *   DoFMap<dim> dofs(mesh, network);
    *   const auto local = dofs.cell_dofs(c); // node sides, then bubbles
@@ -74,6 +82,66 @@ namespace PolyFrac
     DoFMap(const PolytopalMesh<dim>   &mesh,
            const FractureNetwork<dim> &network,
            const BubblePlacement       placement = BubblePlacement::plus_side);
+
+    /**
+     * Distributes the map among the ranks of @p communicator: polytope K
+     * goes to rank @p polytope_owners[K] (partition_among_ranks()); a node
+     * side goes to the lowest-ranked owner of its cells, a fracture face
+     * (its bubble and its multiplier) to the owner of its + cell. Without
+     * this call everything belongs to the one rank of MPI_COMM_SELF.
+     */
+    void
+    distribute_among_ranks(const MPI_Comm                   communicator,
+                           const std::vector<unsigned int> &polytope_owners);
+
+    /** The communicator of distribute_among_ranks() (MPI_COMM_SELF). */
+    MPI_Comm
+    get_communicator() const
+    {
+      return communicator;
+    }
+
+    /** True if more than one rank shares the map. */
+    bool
+    is_distributed() const
+    {
+      return n_ranks > 1;
+    }
+
+    /** True if polytope @p c belongs to this rank. */
+    bool
+    is_locally_owned_cell(const unsigned int c) const
+    {
+      return cell_owners.empty() || cell_owners[c] == this_rank;
+    }
+
+    /** True if fracture face @p i (its bubble and multiplier) belongs to
+     * this rank. */
+    bool
+    is_locally_owned_fracture_face(const unsigned int i) const
+    {
+      return is_locally_owned_cell(plus_cells[i]);
+    }
+
+    /** The displacement dofs (node sides and bubbles) of this rank. */
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
+
+    /** The displacement dofs of this rank's polytopes: its own and those
+     * its polytopes share with other ranks' ones. */
+    const IndexSet &
+    locally_relevant_dofs() const
+    {
+      return relevant_dofs;
+    }
+
+    /** Prints the ranks, and the polytopes and displacement dofs each owns
+     * (on rank 0; every rank must call it). */
+    void
+    print_partition(std::ostream &out) const;
 
     /** Number of node sides. */
     unsigned int
@@ -168,6 +236,17 @@ namespace PolyFrac
     std::vector<NodeSide> node_sides;
 
   private:
+    /** See distribute_among_ranks(). */
+    MPI_Comm communicator = MPI_COMM_SELF;
+    /** The ranks in #communicator, and this one. */
+    unsigned int n_ranks = 1, this_rank = 0;
+    /** The rank of each polytope; empty: all on this one. */
+    std::vector<unsigned int> cell_owners;
+    /** See locally_owned_dofs(). */
+    IndexSet owned_dofs;
+    /** See locally_relevant_dofs(). */
+    IndexSet relevant_dofs;
+
     unsigned int    n_fracture_faces;
     BubblePlacement placement;
     /** The + cell of each fracture face. */

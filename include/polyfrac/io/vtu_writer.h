@@ -2,6 +2,7 @@
 #define polyfrac_io_vtu_writer_h
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
 
 #include <deal.II/numerics/data_component_interpretation.h>
 
@@ -61,7 +62,8 @@ namespace PolyFrac
    * agglomerate) gets Π^K u. `stress` (σ_K, a tensor), `polytope` (the
    * index of K) and the @p cell_fields are constant over the patch.
    * Without @p elasticity and @p state (a model without mechanics) the
-   * displacement and the stress are left out.
+   * displacement and the stress are left out. On more than one rank, the
+   * patches of this rank's polytopes (@p dofs).
    */
   template <int dim>
   PatchData<dim, dim>
@@ -82,7 +84,8 @@ namespace PolyFrac
    * λ (`traction`), `normal_traction` and `tangential_traction`, and with
    * contact states `normal_state` (0 open, 1 contact) and
    * `tangential_state` (0 stick, 1 slip, 2 free: no friction acts); then
-   * the @p face_fields.
+   * the @p face_fields. On more than one rank, the patches of this rank's
+   * fracture faces (@p dofs).
    */
   template <int dim>
   PatchData<dim - 1, dim>
@@ -111,15 +114,19 @@ namespace PolyFrac
   public:
     /**
      * A series written to @p directory with the zlib @p compression of the
-     * binary VTU data.
+     * binary VTU data, by the ranks of @p communicator.
      */
     VtuSeries(const std::string                                &directory,
               const std::string                                &name,
-              const DataOutBase::VtkFlags::ZlibCompressionLevel compression);
+              const DataOutBase::VtkFlags::ZlibCompressionLevel compression,
+              const MPI_Comm communicator = MPI_COMM_SELF);
 
     /**
      * Writes @p data as the next step, at @p time, and rewrites the `.pvd`
-     * record.
+     * record. On more than one rank, each rank writes its @p data as piece
+     * `name-NNNN.RRRR.vtu` (RRRR: the rank), rank 0 the `name-NNNN.pvtu`
+     * record of the pieces, which the `.pvd` record lists; every rank must
+     * call it.
      */
     template <int dim, int spacedim>
     void
@@ -132,8 +139,11 @@ namespace PolyFrac
   private:
     std::string                                 directory;
     std::string                                 name;
+    MPI_Comm                                    communicator;
     DataOutBase::VtkFlags                       flags;
     std::vector<std::pair<double, std::string>> times_and_names;
+    /** The pieces of the `.pvtu` records written so far. */
+    std::vector<std::string> pieces;
   };
 } // namespace PolyFrac
 

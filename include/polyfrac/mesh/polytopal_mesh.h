@@ -112,6 +112,15 @@ namespace PolyFrac
     agglomerate(std::vector<unsigned int> part,
                 const std::vector<bool>  &keep_face) const;
 
+    /**
+     * The polytopes split into @p n_parts parts of about equal size by
+     * METIS on their face graph (fracture faces included), one part per MPI
+     * rank (DoFMap::distribute_among_ranks()): an agglomerate stays whole,
+     * and the same mesh gives the same parts on every rank.
+     */
+    std::vector<unsigned int>
+    partition(const unsigned int n_parts) const;
+
     /** Number of polytopes. */
     unsigned int
     n_cells() const

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
@@ -61,12 +62,15 @@ namespace PolyFrac
    * |rhs|, or at the residual @p enough if that is larger; returns the
    * number of iterations and whether it got there within `Linear
    * solver/Maximum iterations` (the caller decides what to do otherwise).
+   * VectorType: Vector<double>, or TrilinosWrappers::MPI::Vector on the
+   * row map of a distributed @p matrix.
    */
+  template <typename VectorType>
   std::pair<unsigned int, bool>
   solve_krylov(const bool                               symmetric,
                const TrilinosWrappers::SparseMatrix    &matrix,
-               Vector<double>                          &x,
-               const Vector<double>                    &rhs,
+               VectorType                              &x,
+               const VectorType                        &rhs,
                const TrilinosWrappers::PreconditionAMG &amg,
                const Parameters::SolverData            &solver,
                const double                             enough = 0.);
@@ -79,11 +83,11 @@ namespace PolyFrac
    * reach `Linear solver/Tolerance` (relative to |rhs|) within `Linear
    * solver/Maximum iterations`.
    */
-  template <int dim>
+  template <int dim, typename VectorType>
   unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &matrix,
-               Vector<double>                       &x,
-               const Vector<double>                 &rhs,
+               VectorType                           &x,
+               const VectorType                     &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
                const Parameters::SolverData         &solver);

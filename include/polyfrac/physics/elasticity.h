@@ -3,9 +3,11 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -182,6 +184,15 @@ namespace PolyFrac
                       Vector<double>                 &system_rhs) const;
 
   private:
+    /**
+     * solve() on more than one rank: @p load (whole on every rank) restricted
+     * to this rank's dofs, solved by CG with AMG or by MUMPS (Method =
+     * direct) on the distributed #trilinos_matrix; @p u gets the whole
+     * solution on every rank. Returns the CG iterations (0 for MUMPS).
+     */
+    unsigned int
+    solve_distributed(const Vector<double> &load, Vector<double> &u);
+
     /** Throws, listing the ids the mesh has, if a Dirichlet or Neumann
      * boundary id of the parameters is carried by no boundary face. */
     void
@@ -258,12 +269,18 @@ namespace PolyFrac
     SparsityPattern sparsity;
     /** System matrix for Linear solver/Method = direct. */
     SparseMatrix<double> matrix;
-    /** System matrix for Linear solver/Method = AMG. */
+    /** System matrix for Linear solver/Method = AMG, and for both methods
+     * on more than one rank (the rows of this rank's dofs). */
     TrilinosWrappers::SparseMatrix trilinos_matrix;
     Vector<double>                 rhs;
     /** The factorisation of #matrix (Method = direct), made by the first
      * solve() after assemble(). */
     std::unique_ptr<SparseDirectUMFPACK> direct;
+    /** What MUMPS reports (it has no iterations to control). */
+    SolverControl direct_control;
+    /** The MUMPS factorisation of #trilinos_matrix (Method = direct on more
+     * than one rank), made by the first solve() after assemble(). */
+    std::unique_ptr<TrilinosWrappers::SolverDirect> distributed_direct;
   };
 } // namespace PolyFrac
 

@@ -66,7 +66,9 @@ namespace PolyFrac
   error_columns();
 
   /** The Errors of the mechanical @p state against the exact fields of
-   * @p prm at time @p time. */
+   * @p prm at time @p time. On more than one rank (@p dofs), each rank
+   * integrates over its own polytopes and fracture faces, and every rank
+   * gets the errors of the whole mesh (MPI sums). */
   template <int dim>
   Errors
   compute_errors(const Parameters           &prm,
