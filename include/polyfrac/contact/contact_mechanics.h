@@ -200,14 +200,16 @@ namespace PolyFrac
      * UMFPACK on the saddle point, also when GMRES does not converge. The
      * Krylov solvers stop at the larger of a tenth of what the Newton test
      * accepts (Nonlinear solver/Tolerance times the load's norm) and the
-     * forcing term η times the complementarity residual; the start step
-     * of nested iteration (@p iteration 0) at η² times the load's norm.
-     * Returns how the step was solved (one line; empty for Method =
-     * direct).
+     * forcing term η times the complementarity residual; a step on
+     * @p given_states (the start step of nested iteration, @p iteration 0,
+     * and the first iteration of a load step after the first) at η² times
+     * the load's norm at the tightest. Returns how the step was solved
+     * (one line; empty for Method = direct).
      */
     std::string
     linear_step(const Residual    &R,
                 const unsigned int iteration,
+                const bool         given_states,
                 Vector<double>    &step);
 
     /**
@@ -236,9 +238,14 @@ namespace PolyFrac
     void
     stiffness_vmult(const Vector<double> &src, Vector<double> &dst) const;
 
-    /** Newton on one load step; false if it did not converge. */
+    /** Newton on one load step to @p load, from @p x; @p continued: from
+     * the states of a converged load step before it. False if it did not
+     * converge. */
     bool
-    newton(const double load, Vector<double> &x, std::ostream &out);
+    newton(const double    load,
+           const bool      continued,
+           Vector<double> &x,
+           std::ostream   &out);
 
     const Parameters           &prm;
     const MeshGeometry<dim>    &geometry;
