@@ -10,14 +10,17 @@ import subprocess
 import sys
 
 
-def arguments(description, root):
-    """The command line of a chart script (--runs, --program); prints the
-    machine's load before the runs."""
+def arguments(description, root, more=None):
+    """The command line of a chart script (--runs, --program, and the
+    arguments that `more(parser)` adds); prints the machine's load before
+    the runs."""
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--runs", type=int, default=3,
                         help="runs per point (the wall is their median)")
     parser.add_argument("--program",
                         default=os.path.join(root, "build", "polyfrac"))
+    if more:
+        more(parser)
     args = parser.parse_args()
     print("load before: %s" % open("/proc/loadavg").read().strip())
     return args
