@@ -84,19 +84,14 @@ def main():
                       (name, rows[-1]["label"], rows[-1]["unknowns"], wall,
                        memory, rows[-1]["err_u"], rows[-1]["err_grad_u"]),
                       flush=True)
-    print("load after: %s" % open("/proc/loadavg").read().strip())
-    table = os.path.join(ROOT, "benchmarks", "b2-3d-chart.csv")
-    speed_accuracy.write_csv(rows, table)
-    png = os.path.join(ROOT, "benchmarks", "b2-3d-chart.png")
-    speed_accuracy.chart(
-        rows, (("err_u", "err_u (relative L2)"),
-               ("err_grad_u", "err_grad_u (relative L2)")),
-        png,
+    speed_accuracy.publish(
+        rows, ROOT, "b2-3d-chart",
+        (("err_u", "err_u (relative L2)"),
+         ("err_grad_u", "err_grad_u (relative L2)")),
         "B2-3D (Tresca): accuracy against wall time and unknowns, this "
         "machine\n(grey: the goal of issue 9, err_u 1e-3 in 30 s; labels: "
         "last mesh or adaptive cycles)",
         goals=((0, 0, "h", 1e-3), (0, 0, "v", 30)))
-    print("wrote %s and %s" % (table, png))
 
 
 if __name__ == "__main__":

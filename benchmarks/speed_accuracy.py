@@ -99,3 +99,14 @@ def chart(rows, errors, png, title, scale=1, style=None, goals=()):
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(png, dpi=100)
+
+
+def publish(rows, root, name, errors, title, goals=()):
+    """Prints the load, writes benchmarks/<name>.csv (the points) and
+    benchmarks/<name>.png (chart() of `errors`, with `title` and `goals`)."""
+    print("load after: %s" % open("/proc/loadavg").read().strip())
+    table = os.path.join(root, "benchmarks", name + ".csv")
+    write_csv(rows, table)
+    png = os.path.join(root, "benchmarks", name + ".png")
+    chart(rows, errors, png, title, goals=goals)
+    print("wrote %s and %s" % (table, png))

@@ -385,30 +385,34 @@ namespace PolyFrac
     {
       PerThreadFunction<dim> force, stress;
     };
-    cell_loop_after<Loads, CellSystem>(
-      prepare,
-      geometry.mesh.n_cells(),
-      Loads{PerThreadFunction<dim>([this, t = body_force->get_time()]() {
-              return make_body_force(t);
-            }),
-            PerThreadFunction<dim>([this, t = initial_stress->get_time()]() {
-              return make_initial_stress(t);
-            })},
-      [this](const unsigned int cell, Loads &loads, CellSystem &copy) {
-        copy.dofs.clear();
-        if (!dofs.is_locally_owned_cell(cell))
-          return;
-        const LocalReconstruction<dim> local(geometry, dofs, network, cell);
-        copy.stiffness = local_stiffness(local);
-        copy.load =
-          cell_load(local, cell, loads.force.get(), loads.stress.get());
-        copy.dofs = dofs.cell_dofs(cell);
-      },
-      [&](const CellSystem &copy) {
-        if (!copy.dofs.empty())
-          c.distribute_local_to_global(
-            copy.stiffness, copy.load, copy.dofs, system_matrix, system_rhs);
-      });
+    const Loads loads{
+      PerThreadFunction<dim>(
+        [this, t = body_force->get_time()]() { return make_body_force(t); }),
+      PerThreadFunction<dim>([this, t = initial_stress->get_time()]() {
+        return make_initial_stress(t);
+      })};
+    const auto worker = [this](const unsigned int cell,
+                               Loads             &loads,
+                               CellSystem        &copy) {
+      copy.dofs.clear();
+      if (!dofs.is_locally_owned_cell(cell))
+        return;
+      const LocalReconstruction<dim> local(geometry, dofs, network, cell);
+      copy.stiffness = local_stiffness(local);
+      copy.load = cell_load(local, cell, loads.force.get(), loads.stress.get());
+      copy.dofs = dofs.cell_dofs(cell);
+    };
+    const auto copier = [&](const CellSystem &copy) {
+      if (!copy.dofs.empty())
+        c.distribute_local_to_global(
+          copy.stiffness, copy.load, copy.dofs, system_matrix, system_rhs);
+    };
+    const unsigned int n_cells = geometry.mesh.n_cells();
+    if (prepare)
+      cell_loop_after<Loads, CellSystem>(
+        prepare, n_cells, loads, worker, copier);
+    else
+      cell_loop<Loads, CellSystem>(n_cells, loads, worker, copier);
   }
 
 

@@ -226,17 +226,17 @@ namespace PolyFrac
     /**
      * Adds the cell stiffness matrices and body-force loads, condensed by
      * @p c, to @p system_matrix and @p system_rhs: a SparseMatrix<double>
-     * for UMFPACK or a TrilinosWrappers::SparseMatrix for AMG. @p prepare
-     * makes @p system_matrix (its pattern) while the first cells are
-     * computed (cell_loop_after()).
+     * for UMFPACK or a TrilinosWrappers::SparseMatrix for AMG. A given
+     * @p prepare makes @p system_matrix (its pattern) while the first cells
+     * are computed (cell_loop_after()); without, the cells go straight
+     * through cell_loop(). Distributed, only this rank's polytopes.
      */
     template <typename MatrixType>
     void
-    assemble_cells(
-      const AffineConstraints<double> &c,
-      MatrixType                      &system_matrix,
-      Vector<double>                  &system_rhs,
-      const std::function<void()>     &prepare = [] {}) const;
+    assemble_cells(const AffineConstraints<double> &c,
+                   MatrixType                      &system_matrix,
+                   Vector<double>                  &system_rhs,
+                   const std::function<void()>     &prepare = {}) const;
 
     /**
      * Adds the face loads Σ |σ| load · (coefficients): the Neumann
