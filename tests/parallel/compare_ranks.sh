@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Runs a scene serially and on N ranks (mpirun) and checks that
+# - the convergence tables agree (columns level to err_fracture_pressure of
+#   convergence.csv; wall times differ) to the relative tolerance TOL;
+# - the N-rank run wrote, for every VTU step of the serial run, a .pvtu
+#   record listed by the .pvd, whose N pieces exist and hold data;
+# - only rank 0 printed (the N-rank output has the serial one's lines).
+# Exits non-zero, naming what fails.
+#
+# usage: compare_ranks.sh POLYFRAC WORKDIR N TOL FILE.prm [--set A=B ...]
+set -euo pipefail
+polyfrac=$1 workdir=$2 n=$3 tolerance=$4 prm=$5
+shift 5
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+rm -rf "$workdir" && mkdir -p "$workdir"
+"$polyfrac" "$prm" "$@" --set "Output/Output directory=$workdir/serial" \
+  > "$workdir/serial.log" 2>&1 || { cat "$workdir/serial.log"; exit 1; }
+mpirun -np "$n" --oversubscribe "$polyfrac" "$prm" "$@" \
+  --set "Output/Output directory=$workdir/ranks" > "$workdir/ranks.log" 2>&1 ||
+  { cat "$workdir/ranks.log"; echo "the $n-rank run failed"; exit 1; }
+
+for run in serial ranks; do
+  cut -d, -f1-11 "$workdir/$run/convergence.csv" > "$workdir/$run.csv"
+done
+numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$workdir/serial.csv" \
+  "$workdir/ranks.csv" ||
+  { cat "$workdir/serial.csv" "$workdir/ranks.csv";
+    echo "The convergence tables differ (relative tolerance $tolerance)."; exit 1; }
+
+steps=0
+for vtu in "$workdir"/serial/*-[0-9][0-9][0-9][0-9].vtu; do
+  name=$(basename "$vtu" .vtu)
+  pvtu=$workdir/ranks/$name.pvtu
+  [ -s "$pvtu" ] || { echo "no $name.pvtu for $name.vtu"; exit 1; }
+  grep -q "$name.pvtu" "$workdir/ranks/${name%-*}.pvd" ||
+    { echo "${name%-*}.pvd does not list $name.pvtu"; exit 1; }
+  for ((r = 0; r < n; ++r)); do
+    piece=$(printf "%s.%04d.vtu" "$name" "$r")
+    grep -q "$piece" "$pvtu" && [ -s "$workdir/ranks/$piece" ] ||
+      { echo "$name.pvtu: piece $piece missing"; exit 1; }
+  done
+  steps=$((steps + 1))
+done
+[ "$steps" -gt 0 ] || { echo "the serial run wrote no VTU step"; exit 1; }
+
+if [ "$(grep -c '^Level ' "$workdir/ranks.log")" != \
+     "$(grep -c '^Level ' "$workdir/serial.log")" ]; then
+  echo "the $n-rank run printed its levels more than once"; exit 1
+fi
+echo "Same convergence table on $n ranks (relative tolerance $tolerance):" \
+  "$(($(wc -l < "$workdir/serial.csv") - 1)) levels; $steps VTU steps as" \
+  ".pvtu records of $n pieces"
