@@ -368,13 +368,17 @@ namespace PolyFrac
           R.momentum_scale;
         const auto krylov =
           condensation->solve(R.faces, R.vector, enough, step);
+        const std::string rebuilt =
+          krylov.amg_rebuilt ? " (the AMG of an earlier step stalled and "
+                               "was built again)" :
+                               "";
         if (krylov.converged)
           return "condensed step: " + std::to_string(krylov.iterations) + " " +
-                 krylov.method + " iterations";
+                 krylov.method + " iterations" + rebuilt;
         ++n_krylov_fallbacks;
         report = "saddle-point step (UMFPACK): " + krylov.method +
                  " did not converge in " + std::to_string(krylov.iterations) +
-                 " iterations on the condensed step";
+                 " iterations on the condensed step" + rebuilt;
       }
     else if (condensation)
       report = "saddle-point step (UMFPACK): a face's conditions cannot be "

@@ -103,6 +103,9 @@ namespace PolyFrac
        * step is invalid.
        */
       bool converged;
+      /** Whether the AMG of an earlier operator stalled and was built
+       * again for this one (the iterations count both solves). */
+      bool amg_rebuilt = false;
     };
 
     /**
@@ -124,7 +127,10 @@ namespace PolyFrac
      * saddle-point system with the face conditions @p linearisation, and
      * how it was solved. The Krylov solver stops at `Linear
      * solver/Tolerance` relative to its right-hand side or, earlier, at the
-     * residual @p enough (an inexact Newton step).
+     * residual @p enough (an inexact Newton step). The AMG is that of the
+     * last state change while the faces keep their states; if it has not
+     * reached the tolerance in 100 iterations, it is built again for this
+     * operator and the solve starts over.
      */
     KrylovSolve
     solve(const std::vector<FaceLinearisation<dim>> &linearisation,
