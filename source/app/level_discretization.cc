@@ -2,6 +2,7 @@
 
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mesh_builder.h>
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/mesh/gmsh_reader.h>
 
 #include <algorithm>
@@ -185,11 +186,7 @@ namespace PolyFrac
                                          prm.contact.split_bubbles ?
                                                BubblePlacement::split :
                                                BubblePlacement::plus_side);
-    if (const unsigned int n_ranks =
-          Utilities::MPI::job_supports_mpi() ?
-            Utilities::MPI::n_mpi_processes(communicator) :
-            1;
-        n_ranks > 1)
+    if (const unsigned int n_ranks = n_mpi_ranks(communicator); n_ranks > 1)
       dofs->distribute_among_ranks(communicator, mesh->partition(n_ranks));
   }
 

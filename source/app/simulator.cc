@@ -5,6 +5,7 @@
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/base/memory_estimate.h>
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/postprocessing/verification.h>
 
 #include <algorithm>
@@ -103,8 +104,7 @@ namespace PolyFrac
                             compression,
                             communicator);
       }
-    if (time_series && (!Utilities::MPI::job_supports_mpi() ||
-                        Utilities::MPI::this_mpi_process(communicator) == 0))
+    if (time_series && is_root_rank(communicator))
       {
         time_series_name = "time_series" + level_name + ".csv";
         this->time_series.emplace(prm.output.directory + "/" +
@@ -208,9 +208,7 @@ namespace PolyFrac
       out << "Warning: " << warning << std::endl;
     check_memory(prm);
     check_distributable();
-    const bool mpi = Utilities::MPI::job_supports_mpi();
-    const bool root =
-      !mpi || Utilities::MPI::this_mpi_process(communicator) == 0;
+    const bool root = is_root_rank(communicator);
     if (root)
       {
         prm.create_output_directory();
@@ -219,7 +217,7 @@ namespace PolyFrac
       }
     // The other ranks write their pieces once rank 0 has made the
     // directory (if it cannot, main() stops them all).
-    if (mpi)
+    if (n_mpi_ranks(communicator) > 1)
       MPI_Barrier(communicator);
     written_files = {"used_parameters.prm"};
 
@@ -253,18 +251,23 @@ namespace PolyFrac
   void
   Simulator<dim>::check_distributable() const
   {
-    if (!Utilities::MPI::job_supports_mpi())
-      return;
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int n_ranks = n_mpi_ranks(communicator);
     if (n_ranks == 1)
       return;
     const std::string where = "In <" + prm.file_name + ">, run on " +
                               std::to_string(n_ranks) + " MPI ranks: ";
-    AssertThrow(prm.model == "elasticity",
+    AssertThrow(prm.model == "elasticity" || prm.model == "contact mechanics",
                 ExcMessage(where + "Model = " + prm.model +
-                           " runs on one rank only so far (Model = "
-                           "elasticity runs on several). Run it without "
-                           "mpirun, or with mpirun -np 1."));
+                           " runs on one rank only so far (elasticity and "
+                           "contact mechanics run on several). Run it "
+                           "without mpirun, or with mpirun -np 1."));
+    AssertThrow(prm.model != "contact mechanics" ||
+                  (prm.solver.method == "AMG" && prm.contact.bubbles),
+                ExcMessage(where + "Model = contact mechanics runs on "
+                                   "several ranks with the condensed Newton "
+                                   "steps only (Linear solver/Method = AMG, "
+                                   "Contact/Bubbles = true); the saddle-point "
+                                   "solve runs on one rank so far."));
     AssertThrow(prm.mesh.refinement != "adaptive",
                 ExcMessage(where + "Mesh/Refinement = adaptive runs on one "
                                    "rank only so far. Run it without mpirun, "

@@ -77,10 +77,11 @@ namespace PolyFrac
                                                   prm.solver);
         reduced_graph_stiffness.reinit(condensation->pattern());
         elasticity.assemble_operator(reduced_graph_stiffness, load_vector);
-        // stiffness_row() reads Epetra's local column indices as dofs.
-        Assert(reduced_graph_stiffness.trilinos_matrix().ColMap().SameAs(
-                 reduced_graph_stiffness.trilinos_matrix().RowMap()),
-               ExcNotImplemented());
+        // Each rank has added the loads of its polytopes and faces.
+        if (dofs.is_distributed())
+          Utilities::MPI::sum(load_vector,
+                              dofs.get_communicator(),
+                              load_vector);
       }
     else
       {
@@ -156,6 +157,10 @@ namespace PolyFrac
         make_dirichlet_values();
         elastic_load.reinit(load_vector.size());
         elasticity.assemble_load(elastic_load);
+        if (dofs.is_distributed())
+          Utilities::MPI::sum(elastic_load,
+                              dofs.get_communicator(),
+                              elastic_load);
         load_time = t;
       }
     load_vector = elastic_load;
@@ -383,6 +388,13 @@ namespace PolyFrac
     else if (condensation)
       report = "saddle-point step (UMFPACK): a face's conditions cannot be "
                "condensed";
+
+    AssertThrow(!dofs.is_distributed(),
+                ExcMessage("In <" + prm.file_name + ">, Newton iteration " +
+                           std::to_string(iteration) + ": " + report +
+                           ". On several MPI ranks there is no saddle-point "
+                           "step yet: run on one rank, or raise Linear "
+                           "solver/Maximum iterations."));
 
     // With the condensed steps A lives on the reduced graph only: the
     // saddle-point pattern is made for this step.

@@ -1,11 +1,14 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/contact/face_condensation.h>
 #include <polyfrac/physics/amg_solver.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <malloc.h>
 
 #include <algorithm>
@@ -94,20 +97,26 @@ namespace PolyFrac
     for (unsigned int i = 0; i < jumps.size(); ++i)
       stencils.push_back(face_stencil(i));
     // The pattern of A: the cell blocks, and the cells each bubble enters.
+    // Distributed, each rank makes the rows that its polytopes and its
+    // fracture faces add to (some of them other ranks' rows).
     DynamicSparsityPattern                 dsp(n_u);
     std::vector<std::vector<unsigned int>> bubble_cells(jumps.size());
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
       {
+        for (const unsigned int i : dofs.cell_bubbles(c))
+          bubble_cells[i].push_back(c);
+        if (!dofs.is_locally_owned_cell(c))
+          continue;
         const auto local = dofs.cell_dofs(c);
         for (const auto row : local)
           dsp.add_entries(row, local.begin(), local.end());
-        for (const unsigned int i : dofs.cell_bubbles(c))
-          bubble_cells[i].push_back(c);
       }
     // The couplings of the face stencils through the rows of A on the
     // bubbles (those rows are the dofs of the cells the bubble enters).
     for (unsigned int i = 0; i < jumps.size(); ++i)
       {
+        if (!dofs.is_locally_owned_fracture_face(i))
+          continue;
         const auto                       &stencil = stencils[i];
         std::set<types::global_dof_index> coupled;
         for (const unsigned int c : bubble_cells[i])
@@ -124,7 +133,29 @@ namespace PolyFrac
                 dsp.add(row, x);
             }
       }
-    reduced_pattern.copy_from(dsp);
+    if (!dofs.is_distributed())
+      {
+        reduced_pattern.copy_from(dsp);
+        return;
+      }
+    IndexSet writable(n_u);
+    for (types::global_dof_index row = 0; row < n_u; ++row)
+      if (dsp.row_length(row) > 0)
+        writable.add_index(row);
+    writable.compress();
+    reduced_pattern.reinit(dofs.locally_owned_dofs(),
+                           dofs.locally_owned_dofs(),
+                           writable,
+                           dofs.get_communicator());
+    std::vector<types::global_dof_index> columns;
+    for (const auto row : writable)
+      {
+        columns.clear();
+        for (auto entry = dsp.begin(row); entry != dsp.end(row); ++entry)
+          columns.push_back(entry->column());
+        reduced_pattern.add_entries(row, columns.begin(), columns.end(), true);
+      }
+    reduced_pattern.compress();
   }
 
 
@@ -428,7 +459,7 @@ namespace PolyFrac
       {
         const auto row = stiffness_row(stiffness, dofs.bubble_dof(i, c));
         for (int e = 0; e < row.length; ++e)
-          functional[row.columns[e]] += face.frame[k][c] * row.values[e];
+          functional[row.column(e)] += face.frame[k][c] * row.values[e];
       }
     return functional;
   }
@@ -448,18 +479,22 @@ namespace PolyFrac
     // graph is reference counted): only its values are new.
     matrix.reinit(reduced_pattern);
 
-    // D A D, a row at a time (A lives on the same graph).
+    // D A D, a row at a time (A lives on the same graph), on this rank's
+    // rows; the corrections of this rank's faces (whose bubble rows of A
+    // are this rank's).
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
-    for (types::global_dof_index r = 0; r < first_bubble; ++r)
-      if (free_nodal[r])
+    const Epetra_CrsMatrix              &A = stiffness.trilinos_matrix();
+    for (int local = 0; local < A.NumMyRows(); ++local)
+      if (const types::global_dof_index r = A.GRID(local);
+          r < first_bubble && free_nodal[r])
         {
           columns.clear();
           values.clear();
           const auto row = stiffness_row(stiffness, r);
           for (int e = 0; e < row.length; ++e)
             {
-              const types::global_dof_index column = row.columns[e];
+              const types::global_dof_index column = row.column(e);
               if (column < first_bubble && free_nodal[column])
                 {
                   columns.push_back(column);
@@ -474,6 +509,8 @@ namespace PolyFrac
     // columns of the face's stencil, one row per dof its bubble couples to.
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
+        if (!dofs.is_locally_owned_fracture_face(i))
+          continue;
         const auto                                       &stencil = stencils[i];
         std::map<types::global_dof_index, Vector<double>> K;
         Vector<double> scaled(stencil.size());
@@ -491,7 +528,7 @@ namespace PolyFrac
             const auto A_row = stiffness_row(stiffness, bubble);
             for (int e = 0; e < A_row.length; ++e)
               {
-                const types::global_dof_index column = A_row.columns[e];
+                const types::global_dof_index column = A_row.column(e);
                 if (column >= first_bubble || free_nodal[column])
                   {
                     auto &row = K[column];
@@ -532,16 +569,21 @@ namespace PolyFrac
         reduced_dof[dofs.bubble_dof(i, t)] = true;
     matrix.compress(VectorOperation::add);
     double diagonal_scale = 0;
-    for (types::global_dof_index row = 0; row < n_u; ++row)
-      diagonal_scale += std::abs(matrix.diag_element(row)) / n_u;
-    for (types::global_dof_index row = 0; row < n_u; ++row)
-      if (!reduced_dof[row])
+    for (int local = 0; local < A.NumMyRows(); ++local)
+      diagonal_scale += std::abs(matrix.diag_element(A.GRID(local))) / n_u;
+    if (dofs.is_distributed())
+      diagonal_scale =
+        Utilities::MPI::sum(diagonal_scale, dofs.get_communicator());
+    for (int local = 0; local < A.NumMyRows(); ++local)
+      if (const types::global_dof_index row = A.GRID(local); !reduced_dof[row])
         matrix.set(row, row, diagonal_scale);
     matrix.compress(VectorOperation::insert);
 
     // Σ |σ| E on the jump variables.
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
+        if (!dofs.is_locally_owned_fracture_face(i))
+          continue;
         const auto &T = rows[i].traction;
         for (unsigned int a = 0; a < T.size(); ++a)
           for (unsigned int b = 0; b < T.size(); ++b)
@@ -553,7 +595,7 @@ namespace PolyFrac
 
     // The coupling −(1/w_b) (G^T C_k)(Z^T A q_k)^T of the Coulomb slip faces.
     for (unsigned int i = 0; i < faces.size(); ++i)
-      if (rows[i].coupled)
+      if (rows[i].coupled && dofs.is_locally_owned_fracture_face(i))
         for (unsigned int k = 0; k < dim; ++k)
           if (rows[i].kinematic[k])
             {
@@ -700,7 +742,7 @@ namespace PolyFrac
     KrylovSolve    krylov{symmetric ? "CG" : "GMRES", 0, true};
     if (new_amg)
       std::tie(krylov.iterations, krylov.converged) =
-        solve_krylov(symmetric, *amg_matrix, y, rhs, *amg, solver, enough);
+        krylov_solve(symmetric, *amg_matrix, rhs, solver, enough, y);
     else
       {
         // A reused AMG gets at most reused_amg_iterations; if they do not
@@ -711,13 +753,12 @@ namespace PolyFrac
         limited.max_iterations =
           std::min(solver.max_iterations, reused_amg_iterations);
         std::tie(krylov.iterations, krylov.converged) =
-          solve_krylov(symmetric, *matrix, y, rhs, *amg, limited, enough);
+          krylov_solve(symmetric, *matrix, rhs, limited, enough, y);
         if (!krylov.converged && limited.max_iterations < solver.max_iterations)
           {
             build_amg();
-            y                            = 0;
-            const auto [more, converged] = solve_krylov(
-              symmetric, *amg_matrix, y, rhs, *amg, solver, enough);
+            const auto [more, converged] =
+              krylov_solve(symmetric, *amg_matrix, rhs, solver, enough, y);
             krylov.iterations += more;
             krylov.converged   = converged;
             krylov.amg_rebuilt = true;
@@ -732,40 +773,87 @@ namespace PolyFrac
     step.reinit(residual.size());
     eliminate(y, step);
     step += offset;
-    const auto A_step = [&](const types::global_dof_index r) {
-      const auto row   = stiffness_row(stiffness, r);
-      double     value = 0;
-      for (int e = 0; e < row.length; ++e)
-        value += row.values[e] * step(row.columns[e]);
-      return value;
-    };
     for (unsigned int i = 0; i < faces.size(); ++i)
+      if (dofs.is_locally_owned_fracture_face(i))
+        recover_multiplier(faces[i], rows[i], i, residual, y, step);
+    if (dofs.is_distributed())
       {
-        const auto    &Q   = faces[i].frame;
-        const auto    &T   = rows[i].traction;
-        const double   w_b = bubble_weight(i);
-        Tensor<1, dim> reaction;
-        for (unsigned int c = 0; c < dim; ++c)
-          reaction[c] =
-            -(residual(dofs.bubble_dof(i, c)) + A_step(dofs.bubble_dof(i, c))) /
-            (faces[i].measure * w_b);
-        Tensor<1, dim> multiplier = Q * reaction;
-        for (unsigned int a = 0; a < T.size(); ++a)
-          {
-            multiplier[T[a]] = rows[i].e(a);
-            for (unsigned int b = 0; b < T.size(); ++b)
-              if (rows[i].E(a, b) != 0.)
-                multiplier[T[a]] +=
-                  rows[i].E(a, b) * y(dofs.bubble_dof(i, T[b]));
-            for (unsigned int k = 0; k < dim; ++k)
-              if (rows[i].kinematic[k])
-                multiplier[T[a]] += rows[i].C(a, k) * multiplier[k];
-          }
-        const Tensor<1, dim> global = transpose(Q) * multiplier;
-        for (unsigned int c = 0; c < dim; ++c)
-          step(dofs.multiplier_dof(i, c)) = global[c];
+        // The multipliers of the other ranks' faces are zero here.
+        const types::global_dof_index first = dofs.multiplier_dof(0, 0);
+        Utilities::MPI::sum(
+          ArrayView<const double>(step.begin() + first, step.size() - first),
+          dofs.get_communicator(),
+          ArrayView<double>(step.begin() + first, step.size() - first));
       }
     return krylov;
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::recover_multiplier(const FaceLinearisation<dim> &face,
+                                            const LocalRows              &rows,
+                                            const unsigned int            i,
+                                            const Vector<double> &residual,
+                                            const Vector<double> &y,
+                                            Vector<double>       &step) const
+  {
+    const auto    &Q   = face.frame;
+    const auto    &T   = rows.traction;
+    const double   w_b = bubble_weight(i);
+    Tensor<1, dim> reaction;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        const auto row   = stiffness_row(stiffness, dofs.bubble_dof(i, c));
+        double     A_row = 0;
+        for (int e = 0; e < row.length; ++e)
+          A_row += row.values[e] * step(row.column(e));
+        reaction[c] =
+          -(residual(dofs.bubble_dof(i, c)) + A_row) / (face.measure * w_b);
+      }
+    Tensor<1, dim> multiplier = Q * reaction;
+    for (unsigned int a = 0; a < T.size(); ++a)
+      {
+        multiplier[T[a]] = rows.e(a);
+        for (unsigned int b = 0; b < T.size(); ++b)
+          if (rows.E(a, b) != 0.)
+            multiplier[T[a]] += rows.E(a, b) * y(dofs.bubble_dof(i, T[b]));
+        for (unsigned int k = 0; k < dim; ++k)
+          if (rows.kinematic[k])
+            multiplier[T[a]] += rows.C(a, k) * multiplier[k];
+      }
+    const Tensor<1, dim> global = transpose(Q) * multiplier;
+    for (unsigned int c = 0; c < dim; ++c)
+      step(dofs.multiplier_dof(i, c)) = global[c];
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, bool>
+  FaceCondensation<dim>::krylov_solve(
+    const bool                            symmetric,
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const Vector<double>                 &rhs,
+    const Parameters::SolverData         &limits,
+    const double                          enough,
+    Vector<double>                       &y) const
+  {
+    y = 0;
+    if (!dofs.is_distributed())
+      return solve_krylov(symmetric, matrix, y, rhs, *amg, limits, enough);
+    // On this rank's rows, then gathered on every rank.
+    TrilinosWrappers::MPI::Vector b(dofs.locally_owned_dofs(),
+                                    dofs.get_communicator());
+    TrilinosWrappers::MPI::Vector x(b);
+    for (const auto k : dofs.locally_owned_dofs())
+      b(k) = rhs(k);
+    b.compress(VectorOperation::insert);
+    const auto result =
+      solve_krylov(symmetric, matrix, x, b, *amg, limits, enough);
+    y = Vector<double>(x);
+    return result;
   }
 
 

@@ -48,12 +48,18 @@ namespace PolyFrac
     double                 *values;
     int                    *columns;
     const int               error =
-      A.ExtractMyRowView(static_cast<int>(row), view.length, values, columns);
+      A.ExtractMyRowView(A.LRID(
+                           static_cast<TrilinosWrappers::types::int_type>(row)),
+                         view.length,
+                         values,
+                         columns);
     AssertThrow(error == 0,
                 ExcMessage("Epetra error " + std::to_string(error) +
-                           " reading a row of the stiffness matrix."));
-    view.values  = values;
-    view.columns = columns;
+                           " reading row " + std::to_string(row) +
+                           " of the stiffness matrix."));
+    view.values     = values;
+    view.columns    = columns;
+    view.column_map = &A.ColMap();
     return view;
   }
 
@@ -64,15 +70,19 @@ namespace PolyFrac
                            const Vector<double>                 &src,
                            Vector<double>                       &dst)
   {
-    dst = 0;
-    for (types::global_dof_index r = 0; r < stiffness.m(); ++r)
+    dst                       = 0;
+    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
+    for (int local = 0; local < A.NumMyRows(); ++local)
       {
-        const StiffnessRow row = stiffness_row(stiffness, r);
-        double             sum = 0;
+        const types::global_dof_index r   = A.GRID(local);
+        const StiffnessRow            row = stiffness_row(stiffness, r);
+        double                        sum = 0;
         for (int e = 0; e < row.length; ++e)
-          sum += row.values[e] * src(row.columns[e]);
+          sum += row.values[e] * src(row.column(e));
         dst(r) = sum;
       }
+    if (A.Comm().NumProc() > 1)
+      Utilities::MPI::sum(dst, stiffness.get_mpi_communicator(), dst);
   }
 
 
@@ -81,12 +91,14 @@ namespace PolyFrac
   copy_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,
                           SparseMatrix<double>                 &matrix)
   {
+    Assert(stiffness.trilinos_matrix().Comm().NumProc() == 1,
+           ExcNotImplemented());
     for (types::global_dof_index r = 0; r < stiffness.m(); ++r)
       {
         const StiffnessRow row = stiffness_row(stiffness, r);
         for (int e = 0; e < row.length; ++e)
           if (row.values[e] != 0.)
-            matrix.set(r, row.columns[e], row.values[e]);
+            matrix.set(r, row.column(e), row.values[e]);
       }
   }
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/io/vtu_writer.h>
 
 #include <algorithm>
@@ -323,15 +324,12 @@ namespace PolyFrac
   {
     const std::string step =
       name + '-' + Utilities::int_to_string(times_and_names.size(), 4);
-    const bool         mpi = Utilities::MPI::job_supports_mpi();
-    const unsigned int n_ranks =
-      mpi ? Utilities::MPI::n_mpi_processes(communicator) : 1;
-    const unsigned int rank =
-      mpi ? Utilities::MPI::this_mpi_process(communicator) : 0;
-    const auto piece_name = [&](const unsigned int r) {
+    const unsigned int n_ranks    = n_mpi_ranks(communicator);
+    const unsigned int rank       = this_mpi_rank(communicator);
+    const auto         piece_name = [&](const unsigned int r) {
       return n_ranks == 1 ?
-               step + ".vtu" :
-               step + '.' + Utilities::int_to_string(r, 4) + ".vtu";
+                       step + ".vtu" :
+                       step + '.' + Utilities::int_to_string(r, 4) + ".vtu";
     };
     const auto open = [&](const std::string &file_name) {
       const std::filesystem::path path =

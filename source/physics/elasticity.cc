@@ -453,14 +453,15 @@ namespace PolyFrac
   Elasticity<dim>::assemble_load(Vector<double> &system_rhs) const
   {
     for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
-      {
-        const LocalReconstruction<dim> local(geometry, dofs, network, cell);
-        const Vector<double>           b =
-          cell_load(local, cell, *body_force, *initial_stress);
-        const auto local_dofs = dofs.cell_dofs(cell);
-        for (unsigned int k = 0; k < b.size(); ++k)
-          system_rhs(local_dofs[k]) += b(k);
-      }
+      if (dofs.is_locally_owned_cell(cell))
+        {
+          const LocalReconstruction<dim> local(geometry, dofs, network, cell);
+          const Vector<double>           b =
+            cell_load(local, cell, *body_force, *initial_stress);
+          const auto local_dofs = dofs.cell_dofs(cell);
+          for (unsigned int k = 0; k < b.size(); ++k)
+            system_rhs(local_dofs[k]) += b(k);
+        }
     AffineConstraints<double> none;
     none.close();
     assemble_face_loads(none, system_rhs, false);

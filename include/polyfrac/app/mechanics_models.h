@@ -133,6 +133,14 @@ namespace PolyFrac
     PatchData<dim - 1, dim>
     fracture_output() const override;
 
+    /** The displacement, multipliers and contact states of the last
+     * step(), whole on every rank. */
+    const MechanicalState<dim> &
+    mechanical_state() const
+    {
+      return state;
+    }
+
   private:
     const Parameters               &prm;
     const LevelDiscretization<dim> &discretization;

@@ -19,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PolyFrac
@@ -203,6 +204,36 @@ namespace PolyFrac
                   const std::vector<LocalRows>              &rows,
                   const Vector<double>                      &residual,
                   const Vector<double>                      &offset) const;
+
+    /**
+     * The multiplier step of face @p i into @p step, which holds du: the
+     * kinematic components from the bubble rows |σ| w_b dλ = −(R + A du)_b
+     * (@p residual: R), then the traction ones dλ̃_T = E d[[u]]~_T + e + C
+     * dλ̃_K (@p y: the reduced solution). The bubble rows must be this
+     * rank's.
+     */
+    void
+    recover_multiplier(const FaceLinearisation<dim> &face,
+                       const LocalRows              &rows,
+                       const unsigned int            i,
+                       const Vector<double>         &residual,
+                       const Vector<double>         &y,
+                       Vector<double>               &step) const;
+
+    /**
+     * Solves @p matrix @p y = @p rhs from zero with the current #amg, by CG
+     * or GMRES (solve_krylov(), with the limits of @p limits and the
+     * residual @p enough). Distributed, the solve runs on the ranks' rows
+     * and @p y is then gathered whole on every rank. Returns the iterations
+     * and whether the solver converged.
+     */
+    std::pair<unsigned int, bool>
+    krylov_solve(const bool                            symmetric,
+                 const TrilinosWrappers::SparseMatrix &matrix,
+                 const Vector<double>                 &rhs,
+                 const Parameters::SolverData         &limits,
+                 const double                          enough,
+                 Vector<double>                       &y) const;
 
     /** @p x = Z @p y (the multiplier entries of @p x are left alone). */
     void

@@ -7,6 +7,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Epetra_Map.h>
+
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/mesh/mesh_geometry.h>
@@ -50,22 +52,30 @@ namespace PolyFrac
                             const std::vector<BlockCoefficients> &jumps,
                             SparsityPattern                      &pattern);
 
-  /** A row of a Trilinos matrix: Epetra's arrays of its (sorted) columns
-   * and of its values. */
+  /** A row of a Trilinos matrix: Epetra's arrays of its (sorted) local
+   * columns and of its values, and the map from those to dofs. */
   struct StiffnessRow
   {
     /** The number of entries. */
     int length;
-    /** Their column indices. */
+    /** Their local column indices (Epetra's column map). */
     const int *columns;
     /** Their values. */
     const double *values;
+    /** Epetra's column map of the matrix. */
+    const Epetra_Map *column_map;
+
+    /** The dof of entry @p e: its global column. */
+    types::global_dof_index
+    column(const int e) const
+    {
+      return column_map->GID(columns[e]);
+    }
   };
 
   /**
-   * Row @p row of @p matrix, without a copy. The column indices are
-   * Epetra's local ones, which are the dofs on one process (ContactMechanics
-   * checks it once in the Debug build).
+   * Row @p row (a dof) of @p matrix, without a copy; the row must be one of
+   * this rank's (all of them on one rank).
    */
   StiffnessRow
   stiffness_row(const TrilinosWrappers::SparseMatrix &matrix,
@@ -75,6 +85,9 @@ namespace PolyFrac
    * @p dst = A @p src on the displacement rows of the saddle-point system,
    * zero on the multiplier rows, for A stored as a Trilinos matrix on the
    * displacement dofs (Linear solver/Method = AMG, FaceCondensation).
+   * @p src and @p dst are whole vectors on every rank: with A distributed,
+   * each rank multiplies its own rows and the products are summed over the
+   * ranks, so that every rank gets the same @p dst.
    */
   void
   vmult_displacement_block(const TrilinosWrappers::SparseMatrix &stiffness,

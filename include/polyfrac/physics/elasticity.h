@@ -159,7 +159,8 @@ namespace PolyFrac
      * Adds the unconstrained load F (body force, Neumann traction, fracture
      * pressure of Fractures/Pressure; no prescribed traction) at the time of
      * set_time() to @p system_rhs, which may be larger than the
-     * displacement block.
+     * displacement block. Distributed, each rank adds the loads of its own
+     * polytopes and faces: the caller sums @p system_rhs over the ranks.
      */
     void
     assemble_load(Vector<double> &system_rhs) const;
@@ -177,7 +178,9 @@ namespace PolyFrac
     /**
      * The same, into a Trilinos matrix of the displacement dofs (built on
      * a pattern that holds the cell blocks), which is compressed;
-     * @p system_rhs may be longer than the matrix.
+     * @p system_rhs may be longer than the matrix. Distributed, each rank
+     * assembles its own polytopes and adds their loads (see
+     * assemble_load()).
      */
     void
     assemble_operator(TrilinosWrappers::SparseMatrix &system_matrix,

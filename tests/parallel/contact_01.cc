@@ -1,0 +1,126 @@
+// Contact mechanics on two MPI ranks gives the serial answer (the
+// condensed Newton steps, CG or GMRES with ML). Each scene is solved once
+// distributed over MPI_COMM_WORLD and once on each rank alone
+// (MPI_COMM_SELF):
+// - prm/b2-3d-tresca.prm (Tresca, one fracture across the box) on 8^3
+//   cells, and on 8^3 cells agglomerated by 4;
+// - prm/network-3d-coulomb.prm (Coulomb, three fractures, four load steps)
+//   on 8^3 cells.
+// The displacements agree to 100 times the linear solver's tolerance (that
+// of the Newton steps: Linear solver/Tolerance, or a tenth of the Newton
+// tolerance, at which inexact Newton stops the Krylov solves), the
+// multipliers to 100 times the Newton tolerance (they are recovered from
+// the bubble rows of the momentum equation, λ = −(R + A du)_b / (|σ| w_b),
+// which amplifies the linear solver's residual by the stiffness over the
+// face's weight: 1e-9 where u agrees to 7e-11), the contact states are the
+// same on every face, and err_u agrees to 1e-8 where there is an exact
+// solution. The test stops
+// (non-zero exit status) if they do not.
+
+#include <deal.II/base/mpi.h>
+
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/mechanics_models.h>
+
+#include "../tests.h"
+
+using namespace PolyFrac;
+
+namespace
+{
+  /** The converged state of @p prm on @p communicator, with err_u. */
+  std::pair<MechanicalState<3>, Errors>
+  solve(const Parameters &prm, const MPI_Comm communicator)
+  {
+    const LevelDiscretization<3> discretization(prm, 0, communicator);
+    ContactMechanicsModel<3>     model(prm, discretization);
+    std::ostringstream           ignored;
+    model.step(0, 0, ignored);
+    return {model.mechanical_state(), model.errors(0)};
+  }
+
+  /** The relative difference of two lists of multipliers. */
+  double
+  relative_difference(const std::vector<Tensor<1, 3>> &a,
+                      const std::vector<Tensor<1, 3>> &b)
+  {
+    double difference = 0, norm = 0;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        difference += (a[i] - b[i]).norm_square();
+        norm += b[i].norm_square();
+      }
+    return std::sqrt(difference / norm);
+  }
+
+  void
+  check(const std::string &file, const std::vector<std::string> &overrides)
+  {
+    Parameters prm(3);
+    prm.parse(SOURCE_DIR "/../../prm/" + file, overrides);
+    const auto [distributed, e_distributed] = solve(prm, MPI_COMM_WORLD);
+    const auto [serial, e_serial]           = solve(prm, MPI_COMM_SELF);
+
+    Vector<double> difference(distributed.displacement);
+    difference -= serial.displacement;
+    const double u_difference =
+      difference.l2_norm() / serial.displacement.l2_norm();
+    const double lambda_difference =
+      relative_difference(distributed.multipliers, serial.multipliers);
+    unsigned int n_other_states = 0;
+    for (unsigned int i = 0; i < serial.multipliers.size(); ++i)
+      n_other_states +=
+        distributed.contact.normal[i] != serial.contact.normal[i] ||
+        distributed.contact.tangential[i] != serial.contact.tangential[i];
+    const double tolerance =
+      100 * std::max(prm.solver.tolerance, 0.1 * prm.nonlinear.tolerance);
+    const double lambda_tolerance = 100 * prm.nonlinear.tolerance;
+    const double error_difference =
+      e_serial.u ? std::abs(e_distributed.u->value - e_serial.u->value) /
+                     e_serial.u->value :
+                   0.;
+
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << file << ", " << prm.mesh.cells_per_polytope
+                << " cells per polytope: " << serial.displacement.size()
+                << " displacement dofs, " << serial.multipliers.size()
+                << " fracture faces; distributed against serial: u and "
+                   "lambda "
+                << (u_difference <= tolerance &&
+                        lambda_difference <= lambda_tolerance ?
+                      "agree" :
+                      "differ")
+                << " within " << tolerance << " and " << lambda_tolerance
+                << ", " << n_other_states << " faces in another state"
+                << std::endl;
+    std::ostringstream what;
+    what << file << ": |u(2 ranks) - u(serial)| / |u| = " << u_difference
+         << ", |lambda(2 ranks) - lambda(serial)| / |lambda| = "
+         << lambda_difference << " (at most " << tolerance << " and "
+         << lambda_tolerance << "), " << n_other_states
+         << " faces in another state, err_u differs by " << error_difference
+         << " relative (at most 1e-8)";
+    AssertThrow(u_difference <= tolerance &&
+                  lambda_difference <= lambda_tolerance &&
+                  n_other_states == 0 && error_difference <= 1e-8,
+                ExcMessage(what.str()));
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
+              ExcMessage("Run this test on 2 ranks."));
+  const std::vector<std::string> common = {"Linear solver/Method=AMG",
+                                           "Mesh/Subdivisions=8, 8, 8",
+                                           "Output/Output directory=."};
+  for (const std::string cells_per_polytope : {"1", "4"})
+    {
+      auto overrides = common;
+      overrides.push_back("Mesh/Cells per polytope=" + cells_per_polytope);
+      check("b2-3d-tresca.prm", overrides);
+    }
+  check("network-3d-coulomb.prm", common);
+}
