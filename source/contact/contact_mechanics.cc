@@ -729,6 +729,16 @@ namespace PolyFrac
       out << "  " << n_krylov_fallbacks
           << " condensed steps fell back to UMFPACK (GMRES did not converge)"
           << std::endl;
+    if (condensation && prm.output.print_timings)
+      {
+        const auto &times = condensation->phase_times();
+        out << "  Condensed steps: " << times.n_steps << " ("
+            << times.n_amg_setups << " AMG set-ups, " << times.n_iterations
+            << " Krylov iterations); wall: reduced operators "
+            << times.reduced_operator << " s, AMG set-ups " << times.amg_setup
+            << " s, Krylov " << times.krylov << " s, the rest " << times.other
+            << " s" << std::endl;
+      }
 
     state.displacement.reinit(dofs.n_displacement_dofs());
     for (unsigned int k = 0; k < state.displacement.size(); ++k)

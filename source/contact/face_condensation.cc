@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -688,6 +689,9 @@ namespace PolyFrac
   {
     Assert(condensable(linearisation), ExcInternalError());
     const types::global_dof_index n_u = dofs.n_displacement_dofs();
+    const Timer                   step_timer;
+    const double                  timed_before =
+      times.reduced_operator + times.amg_setup + times.krylov;
 
     std::vector<FaceLinearisation<dim>> faces;
     for (const auto &face : linearisation)
@@ -714,9 +718,12 @@ namespace PolyFrac
         amg_matrix.reset();
       }
     malloc_trim(0);
-    auto matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    auto        matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    const Timer operator_timer;
     make_reduced_operator(faces, rows, *matrix);
+    times.reduced_operator += operator_timer.wall_time();
     const auto build_amg = [&]() {
+      const Timer amg_timer;
       amg.reset();
       amg_matrix = std::move(matrix);
       amg        = std::make_unique<TrilinosWrappers::PreconditionAMG>();
@@ -728,6 +735,8 @@ namespace PolyFrac
                      AMGHierarchy::lean);
       amg_structure = structure;
       malloc_trim(0); // ML's set-up products
+      times.amg_setup += amg_timer.wall_time();
+      ++times.n_amg_setups;
     };
     if (new_amg)
       build_amg();
@@ -764,8 +773,18 @@ namespace PolyFrac
             krylov.amg_rebuilt = true;
           }
       }
+    ++times.n_steps;
+    times.n_iterations += krylov.iterations;
+    const auto count_the_rest = [&]() {
+      times.other +=
+        step_timer.wall_time() - (times.reduced_operator + times.amg_setup +
+                                  times.krylov - timed_before);
+    };
     if (!krylov.converged)
-      return krylov;
+      {
+        count_the_rest();
+        return krylov;
+      }
 
     // du = Z y + z_0; the kinematic multipliers from the bubble rows
     // |σ| w_b dλ = −(R + A du)_b, then the traction ones dλ̃_T =
@@ -785,6 +804,7 @@ namespace PolyFrac
           dofs.get_communicator(),
           ArrayView<double>(step.begin() + first, step.size() - first));
       }
+    count_the_rest();
     return krylov;
   }
 
@@ -838,11 +858,17 @@ namespace PolyFrac
     const Vector<double>                 &rhs,
     const Parameters::SolverData         &limits,
     const double                          enough,
-    Vector<double>                       &y) const
+    Vector<double>                       &y)
   {
+    const Timer timer;
     y = 0;
     if (!dofs.is_distributed())
-      return solve_krylov(symmetric, matrix, y, rhs, *amg, limits, enough);
+      {
+        const auto result =
+          solve_krylov(symmetric, matrix, y, rhs, *amg, limits, enough);
+        times.krylov += timer.wall_time();
+        return result;
+      }
     // On this rank's rows, then gathered on every rank.
     TrilinosWrappers::MPI::Vector b(dofs.locally_owned_dofs(),
                                     dofs.get_communicator());
@@ -853,6 +879,7 @@ namespace PolyFrac
     const auto result =
       solve_krylov(symmetric, matrix, x, b, *amg, limits, enough);
     y = Vector<double>(x);
+    times.krylov += timer.wall_time();
     return result;
   }
 

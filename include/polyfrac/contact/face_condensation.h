@@ -109,6 +109,34 @@ namespace PolyFrac
       bool amg_rebuilt = false;
     };
 
+    /** The wall time of the phases of the condensed steps, summed over
+     * the steps solve() made (on this rank). */
+    struct PhaseTimes
+    {
+      /** The condensed steps. */
+      unsigned int n_steps = 0;
+      /** The AMG set-ups among them. */
+      unsigned int n_amg_setups = 0;
+      /** The Krylov iterations. */
+      unsigned int n_iterations = 0;
+      /** Making the reduced operators (Z^T A Z + ...). */
+      double reduced_operator = 0;
+      /** ML's set-ups. */
+      double amg_setup = 0;
+      /** The Krylov solves. */
+      double krylov = 0;
+      /** The rest: the elimination Z, the right-hand sides, the recovery
+       * of the multipliers. */
+      double other = 0;
+    };
+
+    /** The wall time per phase of the steps so far. */
+    const PhaseTimes &
+    phase_times() const
+    {
+      return times;
+    }
+
     /**
      * The graph of the reduced operators, which holds that of A (the cell
      * blocks, fixed dofs included) too: the caller builds A on it.
@@ -233,7 +261,7 @@ namespace PolyFrac
                  const Vector<double>                 &rhs,
                  const Parameters::SolverData         &limits,
                  const double                          enough,
-                 Vector<double>                       &y) const;
+                 Vector<double>                       &y);
 
     /** @p x = Z @p y (the multiplier entries of @p x are left alone). */
     void
@@ -325,6 +353,8 @@ namespace PolyFrac
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<bool>                                  amg_structure;
 
+    /** See phase_times(). */
+    PhaseTimes times;
     /** face_stencil() of every face. */
     std::vector<std::vector<types::global_dof_index>> stencils;
 
