@@ -36,7 +36,12 @@ namespace PolyFrac
     , dofs(*discretization.mesh, *discretization.network, edges)
     , flow(prm, *discretization.geometry, *discretization.network, edges, dofs)
     , pressure(flow.initial_pressure())
-  {}
+  {
+    if (discretization.dofs->is_distributed())
+      dofs.distribute_among_ranks(*discretization.dofs,
+                                  *discretization.mesh,
+                                  edges);
+  }
 
 
 

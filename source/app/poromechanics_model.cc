@@ -58,6 +58,10 @@ namespace PolyFrac
                                (prm.lame_lambda + 2 * prm.lame_mu / dim))
     , pressure(flow.initial_pressure())
   {
+    if (discretization.dofs->is_distributed())
+      pressure_dofs.distribute_among_ranks(*discretization.dofs,
+                                           *discretization.mesh,
+                                           edges);
     state.displacement.reinit(discretization.dofs->n_displacement_dofs());
     for (unsigned int i = 0; i < discretization.network->n_fracture_faces();
          ++i)

@@ -62,6 +62,16 @@ namespace PolyFrac
           }
       }
 
+    AssertThrow(!dofs.is_distributed() ||
+                  (prm.solver.method == "AMG" && prm.contact.bubbles),
+                ExcMessage("In <" + prm.file_name +
+                           ">, on several MPI ranks: contact mechanics runs "
+                           "distributed with the condensed Newton steps only "
+                           "(Linear solver/Method = AMG, Contact/Bubbles = "
+                           "true); the saddle-point solve (Method = direct) "
+                           "runs on one rank so far. Set Method = AMG, or "
+                           "run without mpirun."));
+
     make_dirichlet_values();
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;

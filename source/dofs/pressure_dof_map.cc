@@ -1,4 +1,8 @@
+#include <deal.II/base/mpi.h>
+
 #include <polyfrac/dofs/pressure_dof_map.h>
+
+#include <algorithm>
 
 namespace PolyFrac
 {
@@ -45,6 +49,57 @@ namespace PolyFrac
              c == network.fracture_faces[i].minus_cell,
            ExcInternalError());
     return c == network.fracture_faces[i].plus_cell ? first : first + 1;
+  }
+
+
+
+  template <int dim>
+  void
+  PressureDoFMap<dim>::distribute_among_ranks(
+    const DoFMap<dim>        &displacement_dofs,
+    const PolytopalMesh<dim> &mesh,
+    const FractureEdges<dim> &edges)
+  {
+    polytopes = &displacement_dofs;
+    const unsigned int this_rank =
+      Utilities::MPI::this_mpi_process(get_communicator());
+    const auto owner = [&](const unsigned int c) {
+      return displacement_dofs.cell_owner(c);
+    };
+    owned_dofs.clear();
+    owned_dofs.set_size(n_dofs());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      if (owner(c) == this_rank)
+        owned_dofs.add_index(cell_dof(c));
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      {
+        const auto        &cells = mesh.faces[f].cells;
+        const unsigned int i     = network.fracture_face_of(f);
+        if (i != PolytopalMesh<dim>::invalid)
+          {
+            for (const unsigned int c : cells)
+              if (owner(c) == this_rank)
+                owned_dofs.add_index(face_dof(f, c));
+            continue;
+          }
+        unsigned int lowest = owner(cells[0]);
+        if (cells[1] != PolytopalMesh<dim>::invalid)
+          lowest = std::min(lowest, owner(cells[1]));
+        if (lowest == this_rank)
+          owned_dofs.add_index(face_dof(f, cells[0]));
+      }
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      if (displacement_dofs.is_locally_owned_fracture_face(i))
+        owned_dofs.add_index(fracture_face_dof(i));
+    for (unsigned int e = 0; e < edges.n_edges(); ++e)
+      {
+        unsigned int lowest = numbers::invalid_unsigned_int;
+        for (const unsigned int i : edges.edges[e].faces)
+          lowest = std::min(lowest, owner(network.fracture_faces[i].plus_cell));
+        if (lowest == this_rank)
+          owned_dofs.add_index(edge_dof(e));
+      }
+    owned_dofs.compress();
   }
 
 

@@ -5,7 +5,10 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/discretization/hybrid_finite_volume.h>
 #include <polyfrac/physics/flow.h>
@@ -17,6 +20,18 @@
 
 namespace PolyFrac
 {
+  namespace
+  {
+    /** Why a direct solver can find the pressure system singular. */
+    const std::string singular_message =
+      "Flow: the direct solver finds the pressure system singular: some "
+      "pressures are determined by nothing, e.g. a fracture whose faces are "
+      "all in contact (no storage) in an impermeable matrix (no exchange) "
+      "without a pressure boundary.";
+  } // namespace
+
+
+
   template <int dim>
   Flow<dim>::Flow(const Parameters           &prm,
                   const MeshGeometry<dim>    &geometry,
@@ -195,22 +210,13 @@ namespace PolyFrac
 
   template <int dim>
   void
-  Flow<dim>::assemble(const FlowStepData        &data,
-                      const Vector<double>      &previous,
-                      AffineConstraints<double> &constraints,
-                      SparsityPattern           &sparsity,
-                      SparseMatrix<double>      &matrix,
-                      Vector<double>            &rhs) const
+  Flow<dim>::make_constraints(const FlowStepData        &data,
+                              const Vector<double>      &previous,
+                              AffineConstraints<double> &constraints) const
   {
-    const auto  &mesh = geometry.mesh;
-    const auto  &flow = prm.flow;
-    const double dt   = data.time_step;
-    AssertThrow(dt > 0, ExcMessage("Flow: the time step must be > 0."));
-    matrix_source->set_time(data.time);
-    fracture_source->set_time(data.time);
+    const auto &mesh = geometry.mesh;
+    const auto &flow = prm.flow;
     boundary_pressure->set_time(data.time);
-    boundary_flux->set_time(data.time);
-
     // Prescribed pressures: Pressure boundary faces and fracture edges.
     constraints.clear();
     const auto prescribe = [&](const types::global_dof_index i,
@@ -262,29 +268,56 @@ namespace PolyFrac
           }
       }
     constraints.close();
+  }
 
-    DynamicSparsityPattern pattern(dofs.n_dofs());
+
+
+  template <int dim>
+  template <typename PatternType>
+  void
+  Flow<dim>::make_pattern(PatternType &pattern) const
+  {
     const auto couple = [&](const std::vector<types::global_dof_index> &local) {
       for (const auto i : local)
         for (const auto j : local)
           pattern.add(i, j);
     };
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      couple(cell_dofs(c));
+    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
+      if (dofs.is_locally_owned_cell(c))
+        couple(cell_dofs(c));
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      {
-        couple(fracture_dofs(i));
-        const auto &ff = network.fracture_faces[i];
-        for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
-          couple({dofs.fracture_face_dof(i), dofs.face_dof(ff.face, cell)});
-      }
-    sparsity.copy_from(pattern);
-    matrix.reinit(sparsity);
+      if (dofs.is_locally_owned_fracture_face(i))
+        {
+          couple(fracture_dofs(i));
+          const auto &ff = network.fracture_faces[i];
+          for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
+            couple({dofs.fracture_face_dof(i), dofs.face_dof(ff.face, cell)});
+        }
+  }
+
+
+
+  template <int dim>
+  template <typename MatrixType>
+  void
+  Flow<dim>::assemble(const FlowStepData              &data,
+                      const Vector<double>            &previous,
+                      const AffineConstraints<double> &constraints,
+                      MatrixType                      &matrix,
+                      Vector<double>                  &rhs) const
+  {
+    const auto  &mesh = geometry.mesh;
+    const auto  &flow = prm.flow;
+    const double dt   = data.time_step;
+    AssertThrow(dt > 0, ExcMessage("Flow: the time step must be > 0."));
+    matrix_source->set_time(data.time);
+    fracture_source->set_time(data.time);
+    boundary_flux->set_time(data.time);
     rhs.reinit(dofs.n_dofs());
 
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        if (!active(c, data))
+        if (!active(c, data) || !dofs.is_locally_owned_cell(c))
           continue;
         const auto  &cell   = mesh.cells[c];
         const double volume = geometry.cells[c].measure;
@@ -321,6 +354,8 @@ namespace PolyFrac
 
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
+        if (!dofs.is_locally_owned_fracture_face(i))
+          continue;
         const auto        &ff    = network.fracture_faces[i];
         const auto        &face  = geometry.faces[ff.face];
         FullMatrix<double> local = fracture_matrices[i];
@@ -348,15 +383,22 @@ namespace PolyFrac
               matrix);
       }
 
+    matrix.compress(VectorOperation::add);
+    if (dofs.is_distributed())
+      Utilities::MPI::sum(rhs, dofs.get_communicator(), rhs);
+
     // Prescribed unknowns that no assembled equation touches (those of
     // cells not solved for) get a unit diagonal, so that the matrix stays
-    // regular; distribute() sets their values.
+    // regular; distribute() sets their values. Each rank sees its own rows.
     for (const auto &line : constraints.get_lines())
-      if (matrix.diag_element(line.index) == 0)
+      if ((!dofs.is_distributed() ||
+           dofs.locally_owned_dofs().is_element(line.index)) &&
+          matrix.diag_element(line.index) == 0)
         {
           matrix.set(line.index, line.index, 1.);
           rhs(line.index) = line.inhomogeneity;
         }
+    matrix.compress(VectorOperation::insert);
   }
 
 
@@ -368,65 +410,150 @@ namespace PolyFrac
                         Vector<double>       &pressure) const
   {
     AffineConstraints<double> constraints;
-    SparsityPattern           sparsity;
-    SparseMatrix<double>      matrix;
-    Vector<double>            rhs;
-    assemble(data, previous, constraints, sparsity, matrix, rhs);
+    make_constraints(data, previous, constraints);
+    Vector<double> rhs;
     pressure.reinit(dofs.n_dofs());
     unsigned int iterations = 0;
-    if (prm.solver.method == "direct")
-      {
-        SparseDirectUMFPACK direct;
-        try
-          {
-            direct.initialize(matrix);
-          }
-        catch (const std::exception &)
-          {
-            AssertThrow(false,
-                        ExcMessage(
-                          "Flow: UMFPACK finds the pressure system singular: "
-                          "some pressures are determined by nothing, e.g. a "
-                          "fracture whose faces are all in contact (no "
-                          "storage) in an impermeable matrix (no exchange) "
-                          "without a pressure boundary."));
-          }
-        direct.vmult(pressure, rhs);
-      }
+    if (dofs.is_distributed())
+      iterations = solve_distributed(data, previous, constraints, pressure);
     else
       {
-        TrilinosWrappers::SparseMatrix trilinos_matrix;
-        // No drop tolerance: Trilinos' default, 1e-13, is absolute, and
-        // the flow coefficients (k/μ = 1e-12 m²/(Pa s)) lie below it.
-        trilinos_matrix.reinit(matrix, 0.);
-        TrilinosWrappers::PreconditionAMG                 amg;
-        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-        amg_data.elliptic = true;
-        // Coarser aggregates than ML's default (threshold 1e-4): on the
-        // B6 network (cells, faces and fracture unknowns together) CG
-        // needs 735 iterations over 20 solves instead of 1,834.
-        amg_data.aggregation_threshold = 0.1;
-        amg.initialize(trilinos_matrix, amg_data);
-        SolverControl            control(prm.solver.max_iterations,
-                              prm.solver.tolerance * rhs.l2_norm());
-        SolverCG<Vector<double>> cg(control);
-        try
+        SparsityPattern      sparsity;
+        SparseMatrix<double> matrix;
+        make_serial_matrix(sparsity, matrix);
+        assemble(data, previous, constraints, matrix, rhs);
+        if (prm.solver.method == "direct")
           {
-            cg.solve(trilinos_matrix, pressure, rhs, amg);
+            SparseDirectUMFPACK direct;
+            try
+              {
+                direct.initialize(matrix);
+              }
+            catch (const std::exception &)
+              {
+                AssertThrow(false, ExcMessage(singular_message));
+              }
+            direct.vmult(pressure, rhs);
           }
-        catch (const SolverControl::NoConvergence &)
+        else
           {
-            AssertThrow(false,
-                        ExcMessage("Flow: CG + AMG did not reach Linear "
-                                   "solver/Tolerance in " +
-                                   std::to_string(control.last_step()) +
-                                   " iterations; raise Maximum iterations "
-                                   "or use Method = direct."));
+            // No drop tolerance: Trilinos' default, 1e-13, is absolute,
+            // and the flow coefficients (k/μ = 1e-12 m²/(Pa s)) lie below
+            // it.
+            TrilinosWrappers::SparseMatrix trilinos_matrix;
+            trilinos_matrix.reinit(matrix, 0.);
+            iterations = solve_cg(trilinos_matrix, rhs, pressure);
           }
-        iterations = control.last_step();
       }
     constraints.distribute(pressure);
     return iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  Flow<dim>::make_serial_matrix(SparsityPattern      &sparsity,
+                                SparseMatrix<double> &matrix) const
+  {
+    DynamicSparsityPattern pattern(dofs.n_dofs());
+    make_pattern(pattern);
+    sparsity.copy_from(pattern);
+    matrix.reinit(sparsity);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Flow<dim>::solve_distributed(const FlowStepData              &data,
+                               const Vector<double>            &previous,
+                               const AffineConstraints<double> &constraints,
+                               Vector<double>                  &pressure) const
+  {
+    // The rows each rank writes: those of its polytopes and fracture
+    // faces, some of them other ranks'.
+    const IndexSet        &owned = dofs.locally_owned_dofs();
+    DynamicSparsityPattern written(dofs.n_dofs());
+    make_pattern(written);
+    IndexSet writable(dofs.n_dofs());
+    for (types::global_dof_index row = 0; row < dofs.n_dofs(); ++row)
+      if (written.row_length(row) > 0)
+        writable.add_index(row);
+    writable.compress();
+    TrilinosWrappers::SparsityPattern pattern(owned,
+                                              owned,
+                                              writable,
+                                              dofs.get_communicator());
+    make_pattern(pattern);
+    pattern.compress();
+    TrilinosWrappers::SparseMatrix matrix;
+    matrix.reinit(pattern);
+    Vector<double> rhs;
+    assemble(data, previous, constraints, matrix, rhs);
+
+    TrilinosWrappers::MPI::Vector b(owned, dofs.get_communicator());
+    TrilinosWrappers::MPI::Vector x(b);
+    for (const auto k : owned)
+      b(k) = rhs(k);
+    b.compress(VectorOperation::insert);
+    unsigned int iterations = 0;
+    if (prm.solver.method == "direct")
+      {
+        SolverControl                  control;
+        TrilinosWrappers::SolverDirect direct(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
+        try
+          {
+            direct.solve(matrix, x, b);
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false, ExcMessage(singular_message));
+          }
+      }
+    else
+      iterations = solve_cg(matrix, b, x);
+    pressure = Vector<double>(x);
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  template <typename VectorType>
+  unsigned int
+  Flow<dim>::solve_cg(const TrilinosWrappers::SparseMatrix &matrix,
+                      const VectorType                     &rhs,
+                      VectorType                           &pressure) const
+  {
+    TrilinosWrappers::PreconditionAMG                 amg;
+    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+    amg_data.elliptic = true;
+    // Coarser aggregates than ML's default (threshold 1e-4): on the B6
+    // network (cells, faces and fracture unknowns together) CG needs 735
+    // iterations over 20 solves instead of 1,834.
+    amg_data.aggregation_threshold = 0.1;
+    amg.initialize(matrix, amg_data);
+    SolverControl        control(prm.solver.max_iterations,
+                          prm.solver.tolerance * rhs.l2_norm());
+    SolverCG<VectorType> cg(control);
+    try
+      {
+        cg.solve(matrix, pressure, rhs, amg);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        AssertThrow(false,
+                    ExcMessage("Flow: CG + AMG did not reach Linear "
+                               "solver/Tolerance in " +
+                               std::to_string(control.last_step()) +
+                               " iterations; raise Maximum iterations "
+                               "or use Method = direct."));
+      }
+    return control.last_step();
   }
 
 

@@ -119,9 +119,16 @@ namespace PolyFrac
     Vector<double>                du(u1);
     du -= u0;
     Vector<double> Au0(n), Au1(n), Adu(n);
-    stiffness.vmult(Au0, u0);
-    stiffness.vmult(Au1, u1);
-    stiffness.vmult(Adu, du);
+    // Distributed, each rank holds the stiffness of its own polytopes:
+    // the products are summed over the ranks, and so is the load.
+    const auto multiply = [&](const Vector<double> &v, Vector<double> &Av) {
+      stiffness.vmult(Av, v);
+      if (dofs.is_distributed())
+        Utilities::MPI::sum(Av, dofs.get_communicator(), Av);
+    };
+    multiply(u0, Au0);
+    multiply(u1, Au1);
+    multiply(du, Adu);
     terms.stored_before += 0.5 * (u0 * Au0);
     terms.stored_after += 0.5 * (u1 * Au1);
     terms.dissipation.emplace_back("implicit Euler (mechanics)",
@@ -133,6 +140,8 @@ namespace PolyFrac
     // cancel against the flow equations (doc/energy.md §2).
     Vector<double> load(n);
     elasticity.assemble_load(load);
+    if (dofs.is_distributed())
+      Utilities::MPI::sum(load, dofs.get_communicator(), load);
     terms.work.emplace_back("loads", load * du);
     Vector<double> R(Au1);
     R -= load;

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs a scene serially and on N ranks (mpirun) and checks that
 # - the convergence tables agree (columns level to err_fracture_pressure of
-#   convergence.csv; wall times differ) to the relative tolerance TOL;
+#   convergence.csv; wall times differ) to the relative tolerance TOL, and
+#   so do the time series (all but the iteration counts, the energy
+#   residual and the wall time);
 # - the N-rank run wrote, for every VTU step of the serial run, a .pvtu
 #   record listed by the .pvd, whose N pieces exist and hold data;
 # - only rank 0 printed (the N-rank output has the serial one's lines).
@@ -26,6 +28,23 @@ numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$workdir/serial.csv" \
   "$workdir/ranks.csv" ||
   { cat "$workdir/serial.csv" "$workdir/ranks.csv";
     echo "The convergence tables differ (relative tolerance $tolerance)."; exit 1; }
+
+# The time series: step, time, time step, the contact states, the mean
+# aperture and fracture pressure, the errors (columns 1-3 and 6-13; the
+# iteration counts of iterative solves may differ, so may the energy
+# residual, which is round-off, and the wall time).
+for series in "$workdir"/serial/time_series*.csv; do
+  [ -e "$series" ] || continue
+  name=$(basename "$series")
+  [ -s "$workdir/ranks/$name" ] || { echo "the $n-rank run wrote no $name"; exit 1; }
+  for run in serial ranks; do
+    cut -d, -f1-3,6-13 "$workdir/$run/$name" > "$workdir/$run-$name"
+  done
+  numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$workdir/serial-$name" \
+    "$workdir/ranks-$name" ||
+    { cat "$workdir/serial-$name" "$workdir/ranks-$name";
+      echo "$name differs (relative tolerance $tolerance)."; exit 1; }
+done
 
 steps=0
 for vtu in "$workdir"/serial/*-[0-9][0-9][0-9][0-9].vtu; do

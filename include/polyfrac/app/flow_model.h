@@ -60,13 +60,21 @@ namespace PolyFrac
     PatchData<dim - 1, dim>
     fracture_output() const override;
 
+    /** The pressures (PressureDoFMap numbering) of the last step(), whole
+     * on every rank. */
+    const Vector<double> &
+    pressures() const
+    {
+      return pressure;
+    }
+
   private:
     const Parameters               &prm;
     const LevelDiscretization<dim> &discretization;
     /** The fracture edges of the network. */
     const FractureEdges<dim> edges;
-    /** The pressure unknowns. */
-    const PressureDoFMap<dim> dofs;
+    /** The pressure unknowns, distributed like the polytopes. */
+    PressureDoFMap<dim> dofs;
     /** The operator. */
     const Flow<dim> flow;
     /** The state: the pressures at the last time reached. */

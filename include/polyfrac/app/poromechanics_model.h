@@ -78,6 +78,22 @@ namespace PolyFrac
     PatchData<dim - 1, dim>
     fracture_output() const override;
 
+    /** The displacement, multipliers and contact states of the last
+     * step(), whole on every rank. */
+    const MechanicalState<dim> &
+    mechanical_state() const
+    {
+      return state;
+    }
+
+    /** The pressures (PressureDoFMap numbering) of the last step(), whole
+     * on every rank. */
+    const Vector<double> &
+    pressures() const
+    {
+      return pressure;
+    }
+
   private:
     /**
      * With Exact solution/Analytic solution: its displacement becomes the

@@ -91,9 +91,9 @@ namespace PolyFrac
      */
     void
     report_checks(std::ostream &out) const;
-    /** Throws if the scene needs what runs on one rank only so far (a model
-     * other than elasticity, adaptive refinement) and #communicator has
-     * more. */
+    /** Throws if the scene needs what runs on one rank only so far
+     * (adaptive refinement) and #communicator has more. (ContactMechanics
+     * refuses its saddle-point solve on several ranks itself.) */
     void
     check_distributable() const;
 

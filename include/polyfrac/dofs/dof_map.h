@@ -115,6 +115,13 @@ namespace PolyFrac
       return cell_owners.empty() || cell_owners[c] == this_rank;
     }
 
+    /** The rank polytope @p c belongs to (0 when not distributed). */
+    unsigned int
+    cell_owner(const unsigned int c) const
+    {
+      return cell_owners.empty() ? 0 : cell_owners[c];
+    }
+
     /** True if fracture face @p i (its bubble and multiplier) belongs to
      * this rank. */
     bool

@@ -1,9 +1,11 @@
 #ifndef polyfrac_dofs_pressure_dof_map_h
 #define polyfrac_dofs_pressure_dof_map_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/types.h>
 
 #include <polyfrac/dofs/dof_block.h>
+#include <polyfrac/dofs/dof_map.h>
 
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/fractures/fracture_network.h>
@@ -47,6 +49,59 @@ namespace PolyFrac
     PressureDoFMap(const PolytopalMesh<dim>   &mesh,
                    const FractureNetwork<dim> &network,
                    const FractureEdges<dim>   &edges);
+
+    /**
+     * Distributes the pressure unknowns among the ranks that share
+     * @p displacement_dofs (DoFMap::distribute_among_ranks()), which must
+     * outlive this object, with the same polytopes per rank: p_K and the
+     * fracture side p_{Kσ} go to the owner of K, the other face unknowns to
+     * the lowest-ranked owner of their cells, p_{f,σ} to the owner of the
+     * fracture face (that of its + cell), p_e to the lowest-ranked owner
+     * of the fracture faces around the edge (@p edges). Without this call
+     * everything belongs to the one rank of MPI_COMM_SELF.
+     */
+    void
+    distribute_among_ranks(const DoFMap<dim>        &displacement_dofs,
+                           const PolytopalMesh<dim> &mesh,
+                           const FractureEdges<dim> &edges);
+
+    /** True if more than one rank shares the unknowns. */
+    bool
+    is_distributed() const
+    {
+      return polytopes != nullptr && polytopes->is_distributed();
+    }
+
+    /** The communicator of distribute_among_ranks(). */
+    MPI_Comm
+    get_communicator() const
+    {
+      return polytopes != nullptr ? polytopes->get_communicator() :
+                                    MPI_COMM_SELF;
+    }
+
+    /** True if polytope @p c belongs to this rank. */
+    bool
+    is_locally_owned_cell(const unsigned int c) const
+    {
+      return polytopes == nullptr || polytopes->is_locally_owned_cell(c);
+    }
+
+    /** True if fracture face @p i belongs to this rank. */
+    bool
+    is_locally_owned_fracture_face(const unsigned int i) const
+    {
+      return polytopes == nullptr ||
+             polytopes->is_locally_owned_fracture_face(i);
+    }
+
+    /** The pressure unknowns of this rank (after distribute_among_ranks()).
+     */
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
 
     /** Total number of pressure unknowns. */
     types::global_dof_index
@@ -96,6 +151,10 @@ namespace PolyFrac
 
   private:
     const FractureNetwork<dim> &network;
+    /** The polytopes per rank (distribute_among_ranks()), or none. */
+    const DoFMap<dim> *polytopes = nullptr;
+    /** See locally_owned_dofs(). */
+    IndexSet owned_dofs;
     /** First matrix face unknown of each mesh face (relative to the block). */
     std::vector<types::global_dof_index> first_face_dof;
   };

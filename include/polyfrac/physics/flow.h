@@ -5,6 +5,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/expressions.h>
@@ -200,15 +201,59 @@ namespace PolyFrac
     }
 
   private:
-    /** The linear system of one step: matrix, right-hand side and the
-     * constraints (pressure data, inactive cells). */
+    /** The constraints of one step: the pressure data, and the previous
+     * pressures of the unknowns without an equation (inactive cells). */
     void
-    assemble(const FlowStepData        &data,
-             const Vector<double>      &previous,
-             AffineConstraints<double> &constraints,
-             SparsityPattern           &sparsity,
-             SparseMatrix<double>      &matrix,
-             Vector<double>            &rhs) const;
+    make_constraints(const FlowStepData        &data,
+                     const Vector<double>      &previous,
+                     AffineConstraints<double> &constraints) const;
+
+    /** Adds the couplings of this rank's cells and fracture faces (all of
+     * them on one rank) to @p pattern (a deal.II or Trilinos pattern). */
+    template <typename PatternType>
+    void
+    make_pattern(PatternType &pattern) const;
+
+    /** The pattern (make_pattern()) and the matrix of one rank. */
+    void
+    make_serial_matrix(SparsityPattern      &sparsity,
+                       SparseMatrix<double> &matrix) const;
+
+    /**
+     * The linear system of one step with @p constraints: this rank's cells
+     * and fracture faces into @p matrix (built on make_pattern(), then
+     * compressed), the right-hand side into @p rhs, whole and summed over
+     * the ranks. Prescribed unknowns that no equation touches get a unit
+     * row.
+     */
+    template <typename MatrixType>
+    void
+    assemble(const FlowStepData              &data,
+             const Vector<double>            &previous,
+             const AffineConstraints<double> &constraints,
+             MatrixType                      &matrix,
+             Vector<double>                  &rhs) const;
+
+    /**
+     * solve_step() on several ranks: the system in a distributed Trilinos
+     * matrix, solved by CG + AMG or by MUMPS (Method = direct); @p pressure
+     * gets the whole solution on every rank. Returns the CG iterations (0
+     * for MUMPS).
+     */
+    unsigned int
+    solve_distributed(const FlowStepData              &data,
+                      const Vector<double>            &previous,
+                      const AffineConstraints<double> &constraints,
+                      Vector<double>                  &pressure) const;
+
+    /** CG + ML AMG on @p matrix; throws if Linear solver/Tolerance is not
+     * reached. VectorType: Vector<double> or TrilinosWrappers::MPI::Vector.
+     * Returns the iterations. */
+    template <typename VectorType>
+    unsigned int
+    solve_cg(const TrilinosWrappers::SparseMatrix &matrix,
+             const VectorType                     &rhs,
+             VectorType                           &pressure) const;
 
     /** Global unknowns of cell @p c: p_K, then its face unknowns. */
     std::vector<types::global_dof_index>

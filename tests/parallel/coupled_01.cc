@@ -1,0 +1,129 @@
+// Flow and poromechanics on two MPI ranks give the serial answer. Each
+// scene runs its time steps once distributed over MPI_COMM_WORLD and once
+// on each rank alone (MPI_COMM_SELF), on the first level of its parameter
+// file:
+// - prm/flow-2d-network.prm (HFV flow in the matrix and two crossing
+//   fractures, 4 steps), Method = direct (MUMPS against UMFPACK) and AMG;
+// - prm/b4-mandel.prm (Mandel's problem, elasticity and flow by the
+//   fixed-stress split, 2 steps), Method = direct and AMG;
+// - prm/poromechanics-2d-slip.prm (a fault that slips under injection,
+//   Coulomb contact, 10 steps), Method = AMG (contact mechanics runs
+//   distributed with the condensed Newton steps).
+// The pressures and displacements agree to 1e-10 relative with the direct
+// solvers, to 100 times the linear solver's tolerance with AMG (for
+// poromechanics, that of the Newton steps and of the coupling iteration
+// too: a tenth of their tolerances, at which they stop), and the contact
+// states are the same on every face. The test stops (non-zero exit status) if
+// they do not.
+
+#include <deal.II/base/mpi.h>
+
+#include <polyfrac/app/flow_model.h>
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/poromechanics_model.h>
+
+#include "../tests.h"
+
+using namespace PolyFrac;
+
+namespace
+{
+  /** The pressures, the displacement and the contact states of a run. */
+  template <int dim>
+  struct Result
+  {
+    Vector<double> pressure, displacement;
+    ContactStates  contact;
+  };
+
+  /** All time steps of @p prm on @p communicator. */
+  template <int dim, typename ModelType>
+  Result<dim>
+  run(const Parameters &prm, const MPI_Comm communicator)
+  {
+    const LevelDiscretization<dim> discretization(prm, 0, communicator);
+    ModelType                      model(prm, discretization);
+    std::ostringstream             ignored;
+    const double                   dt = prm.time.time_step;
+    for (double t = 0; t < prm.time.end_time - 1e-12 * dt; t += dt)
+      model.step(t, t + dt, ignored);
+    Result<dim> result;
+    result.pressure = model.pressures();
+    if constexpr (std::is_same_v<ModelType, PoromechanicsModel<dim>>)
+      {
+        result.displacement = model.mechanical_state().displacement;
+        result.contact      = model.mechanical_state().contact;
+      }
+    return result;
+  }
+
+  double
+  relative_difference(const Vector<double> &a, const Vector<double> &b)
+  {
+    if (b.size() == 0)
+      return 0;
+    Vector<double> difference(a);
+    difference -= b;
+    return difference.l2_norm() / b.l2_norm();
+  }
+
+  template <int dim, typename ModelType>
+  void
+  check(const std::string &file, const std::string &method)
+  {
+    Parameters prm(dim);
+    prm.parse(SOURCE_DIR "/../../prm/" + file,
+              {"Linear solver/Method=" + method, "Output/Output directory=."});
+    const auto   distributed = run<dim, ModelType>(prm, MPI_COMM_WORLD);
+    const auto   serial      = run<dim, ModelType>(prm, MPI_COMM_SELF);
+    const double p_difference =
+      relative_difference(distributed.pressure, serial.pressure);
+    const double u_difference =
+      relative_difference(distributed.displacement, serial.displacement);
+    unsigned int n_other_states = 0;
+    for (unsigned int i = 0; i < serial.contact.normal.size(); ++i)
+      n_other_states +=
+        distributed.contact.normal[i] != serial.contact.normal[i] ||
+        distributed.contact.tangential[i] != serial.contact.tangential[i];
+    const bool   coupled = std::is_same_v<ModelType, PoromechanicsModel<dim>>;
+    const double tolerance =
+      method == "direct" ?
+        1e-10 :
+        100 * std::max({prm.solver.tolerance,
+                        coupled ? 0.1 * prm.nonlinear.tolerance : 0.,
+                        coupled ? 0.1 * prm.nonlinear.coupling_tolerance : 0.});
+
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << file << ", " << method << ": " << serial.pressure.size()
+                << " pressure and " << serial.displacement.size()
+                << " displacement unknowns; distributed against serial: "
+                << (std::max(p_difference, u_difference) <= tolerance ?
+                      "agree" :
+                      "differ")
+                << " within " << tolerance << ", " << n_other_states
+                << " faces in another state" << std::endl;
+    std::ostringstream what;
+    what << file << ", " << method
+         << ": |p(2 ranks) - p(serial)| / |p| = " << p_difference
+         << ", |u(2 ranks) - u(serial)| / |u| = " << u_difference
+         << " (at most " << tolerance << "), " << n_other_states
+         << " faces in another state";
+    AssertThrow(p_difference <= tolerance && u_difference <= tolerance &&
+                  n_other_states == 0,
+                ExcMessage(what.str()));
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
+              ExcMessage("Run this test on 2 ranks."));
+  for (const std::string method : {"direct", "AMG"})
+    {
+      check<2, FlowModel<2>>("flow-2d-network.prm", method);
+      check<2, PoromechanicsModel<2>>("b4-mandel.prm", method);
+    }
+  check<2, PoromechanicsModel<2>>("poromechanics-2d-slip.prm", "AMG");
+}
