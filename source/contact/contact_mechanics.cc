@@ -1,9 +1,15 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/base/expressions.h>
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/physics/amg_solver.h>
+
+#include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,16 +68,6 @@ namespace PolyFrac
           }
       }
 
-    AssertThrow(!dofs.is_distributed() ||
-                  (prm.solver.method == "AMG" && prm.contact.bubbles),
-                ExcMessage("In <" + prm.file_name +
-                           ">, on several MPI ranks: contact mechanics runs "
-                           "distributed with the condensed Newton steps only "
-                           "(Linear solver/Method = AMG, Contact/Bubbles = "
-                           "true); the saddle-point solve (Method = direct) "
-                           "runs on one rank so far. Set Method = AMG, or "
-                           "run without mpirun."));
-
     make_dirichlet_values();
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;
@@ -79,19 +75,33 @@ namespace PolyFrac
     if (prm.solver.method == "AMG" && prm.contact.bubbles)
       {
         condensation =
-          std::make_unique<FaceCondensation<dim>>(reduced_graph_stiffness,
+          std::make_unique<FaceCondensation<dim>>(trilinos_stiffness,
                                                   dofs,
                                                   jumps,
                                                   dirichlet,
                                                   geometry.mesh.vertices,
                                                   prm.solver);
-        reduced_graph_stiffness.reinit(condensation->pattern());
-        elasticity.assemble_operator(reduced_graph_stiffness, load_vector);
-        // Each rank has added the loads of its polytopes and faces.
-        if (dofs.is_distributed())
-          Utilities::MPI::sum(load_vector,
-                              dofs.get_communicator(),
-                              load_vector);
+        trilinos_stiffness.reinit(condensation->pattern());
+        elasticity.assemble_operator(trilinos_stiffness, load_vector);
+      }
+    else if (dofs.is_distributed())
+      {
+        // Method = direct on several ranks: A on the cell blocks of this
+        // rank's polytopes, distributed like the elasticity matrix.
+        TrilinosWrappers::SparsityPattern pattern(dofs.locally_owned_dofs(),
+                                                  dofs.locally_owned_dofs(),
+                                                  dofs.locally_relevant_dofs(),
+                                                  dofs.get_communicator());
+        for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+          if (dofs.is_locally_owned_cell(c))
+            {
+              const auto local = dofs.cell_dofs(c);
+              for (const auto row : local)
+                pattern.add_entries(row, local.begin(), local.end());
+            }
+        pattern.compress();
+        trilinos_stiffness.reinit(pattern);
+        elasticity.assemble_operator(trilinos_stiffness, load_vector);
       }
     else
       {
@@ -99,6 +109,9 @@ namespace PolyFrac
         stiffness.reinit(sparsity);
         elasticity.assemble_operator(stiffness, load_vector);
       }
+    // Each rank has added the loads of its polytopes and faces.
+    if (dofs.is_distributed())
+      Utilities::MPI::sum(load_vector, dofs.get_communicator(), load_vector);
     compute_load_norm();
 
     solution.reinit(n);
@@ -112,8 +125,8 @@ namespace PolyFrac
   ContactMechanics<dim>::stiffness_vmult(const Vector<double> &src,
                                          Vector<double>       &dst) const
   {
-    if (condensation)
-      vmult_displacement_block(reduced_graph_stiffness, src, dst);
+    if (condensation || dofs.is_distributed())
+      vmult_displacement_block(trilinos_stiffness, src, dst);
     else
       stiffness.vmult(dst, src);
   }
@@ -363,7 +376,9 @@ namespace PolyFrac
                                      const bool         given_states,
                                      Vector<double>    &step)
   {
-    std::string report;
+    std::string       report;
+    const std::string direct_solver =
+      dofs.is_distributed() ? "MUMPS" : "UMFPACK";
     if (condensation && FaceCondensation<dim>::condensable(R.faces))
       {
         // Inexact Newton: while the active set is still wrong (a large
@@ -391,20 +406,19 @@ namespace PolyFrac
           return "condensed step: " + std::to_string(krylov.iterations) + " " +
                  krylov.method + " iterations" + rebuilt;
         ++n_krylov_fallbacks;
-        report = "saddle-point step (UMFPACK): " + krylov.method +
+        report = "saddle-point step (" + direct_solver + "): " + krylov.method +
                  " did not converge in " + std::to_string(krylov.iterations) +
                  " iterations on the condensed step" + rebuilt;
       }
     else if (condensation)
-      report = "saddle-point step (UMFPACK): a face's conditions cannot be "
-               "condensed";
+      report = "saddle-point step (" + direct_solver +
+               "): a face's conditions cannot be condensed";
 
-    AssertThrow(!dofs.is_distributed(),
-                ExcMessage("In <" + prm.file_name + ">, Newton iteration " +
-                           std::to_string(iteration) + ": " + report +
-                           ". On several MPI ranks there is no saddle-point "
-                           "step yet: run on one rank, or raise Linear "
-                           "solver/Maximum iterations."));
+    if (dofs.is_distributed())
+      {
+        distributed_saddle_point_step(R, iteration, step);
+        return report;
+      }
 
     // With the condensed steps A lives on the reduced graph only: the
     // saddle-point pattern is made for this step.
@@ -417,7 +431,7 @@ namespace PolyFrac
       }
     SparseMatrix<double> jacobian(*pattern);
     if (condensation)
-      copy_displacement_block(reduced_graph_stiffness, jacobian);
+      copy_displacement_block(trilinos_stiffness, jacobian);
     else
       jacobian.copy_from(stiffness);
     assemble_saddle_point_jacobian(
@@ -438,6 +452,88 @@ namespace PolyFrac
       }
     direct.vmult(step, rhs);
     return report;
+  }
+
+
+
+  template <int dim>
+  IndexSet
+  ContactMechanics<dim>::locally_owned_unknowns() const
+  {
+    IndexSet owned(solution.size());
+    owned.add_indices(dofs.locally_owned_dofs());
+    for (unsigned int i = 0; i < jumps.size(); ++i)
+      if (dofs.is_locally_owned_fracture_face(i))
+        for (unsigned int d = 0; d < dim; ++d)
+          owned.add_index(dofs.multiplier_dof(i, d));
+    owned.compress();
+    return owned;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::make_distributed_jacobian(
+    const Residual                 &R,
+    TrilinosWrappers::SparseMatrix &jacobian) const
+  {
+    // The entries this rank adds: its rows of A and the couplings of its
+    // fracture faces (some of them in other ranks' rows).
+    const Epetra_CrsMatrix &A = trilinos_stiffness.trilinos_matrix();
+    DynamicSparsityPattern  entries(solution.size());
+    std::vector<std::vector<types::global_dof_index>> columns(A.NumMyRows());
+    for (int local = 0; local < A.NumMyRows(); ++local)
+      {
+        const StiffnessRow row =
+          stiffness_row(trilinos_stiffness, A.GRID(local));
+        for (int e = 0; e < row.length; ++e)
+          columns[local].push_back(row.column(e));
+        entries.add_entries(A.GRID(local),
+                            columns[local].begin(),
+                            columns[local].end());
+      }
+    add_multiplier_couplings(dofs, jumps, entries);
+    TrilinosWrappers::SparsityPattern pattern;
+    make_distributed_pattern(entries,
+                             locally_owned_unknowns(),
+                             dofs.get_communicator(),
+                             pattern);
+
+    jacobian.reinit(pattern);
+    for (int local = 0; local < A.NumMyRows(); ++local)
+      jacobian.add(A.GRID(local),
+                   columns[local].size(),
+                   columns[local].data(),
+                   stiffness_row(trilinos_stiffness, A.GRID(local)).values,
+                   false,
+                   false);
+    assemble_saddle_point_jacobian(
+      R.faces, beta, jumps, dofs, dirichlet, jacobian);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::distributed_saddle_point_step(
+    const Residual    &R,
+    const unsigned int iteration,
+    Vector<double>    &step) const
+  {
+    TrilinosWrappers::SparseMatrix jacobian;
+    make_distributed_jacobian(R, jacobian);
+    Vector<double> rhs(R.vector);
+    rhs *= -1.;
+    step = solve_on_owned_rows(
+      locally_owned_unknowns(),
+      dofs.get_communicator(),
+      rhs,
+      [&](auto &x, const auto &b) {
+        AssertThrow(solve_by_mumps(jacobian, x, b),
+                    ExcMessage(undetermined_message("MUMPS finds it singular",
+                                                    iteration)));
+      });
   }
 
 
@@ -736,9 +832,9 @@ namespace PolyFrac
       }
 
     if (n_krylov_fallbacks > 0)
-      out << "  " << n_krylov_fallbacks
-          << " condensed steps fell back to UMFPACK (GMRES did not converge)"
-          << std::endl;
+      out << "  " << n_krylov_fallbacks << " condensed steps fell back to "
+          << (dofs.is_distributed() ? "MUMPS" : "UMFPACK")
+          << " (GMRES did not converge)" << std::endl;
     if (condensation && prm.output.print_timings)
       {
         const auto &times = condensation->phase_times();

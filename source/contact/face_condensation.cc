@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/contact/face_condensation.h>
 #include <polyfrac/physics/amg_solver.h>
 
@@ -123,10 +124,18 @@ namespace PolyFrac
         for (const unsigned int c : bubble_cells[i])
           for (const auto x : dofs.cell_dofs(c))
             coupled.insert(x);
+        // Both ways: Z^T A Z couples the two stencils symmetrically, and
+        // the Coulomb term of this face adds the transpose of W^T A W's
+        // block (that face may be another rank's).
         for (const auto x : coupled)
           if (x >= first_bubble)
-            for (const auto row : stencils[(x - first_bubble) / dim])
-              dsp.add_entries(row, stencil.begin(), stencil.end(), true);
+            {
+              const auto &other = stencils[(x - first_bubble) / dim];
+              for (const auto row : other)
+                dsp.add_entries(row, stencil.begin(), stencil.end(), true);
+              for (const auto row : stencil)
+                dsp.add_entries(row, other.begin(), other.end(), true);
+            }
           else if (free_nodal[x])
             {
               dsp.add_entries(x, stencil.begin(), stencil.end(), true);
@@ -139,24 +148,10 @@ namespace PolyFrac
         reduced_pattern.copy_from(dsp);
         return;
       }
-    IndexSet writable(n_u);
-    for (types::global_dof_index row = 0; row < n_u; ++row)
-      if (dsp.row_length(row) > 0)
-        writable.add_index(row);
-    writable.compress();
-    reduced_pattern.reinit(dofs.locally_owned_dofs(),
-                           dofs.locally_owned_dofs(),
-                           writable,
-                           dofs.get_communicator());
-    std::vector<types::global_dof_index> columns;
-    for (const auto row : writable)
-      {
-        columns.clear();
-        for (auto entry = dsp.begin(row); entry != dsp.end(row); ++entry)
-          columns.push_back(entry->column());
-        reduced_pattern.add_entries(row, columns.begin(), columns.end(), true);
-      }
-    reduced_pattern.compress();
+    make_distributed_pattern(dsp,
+                             dofs.locally_owned_dofs(),
+                             dofs.get_communicator(),
+                             reduced_pattern);
   }
 
 
@@ -503,7 +498,7 @@ namespace PolyFrac
                 }
             }
           matrix.add(
-            r, columns.size(), columns.data(), values.data(), false, true);
+            r, columns.size(), columns.data(), values.data(), false, false);
         }
 
     // D A W + (D A W)^T + W^T A W, face by face: K = A W restricted to the
@@ -860,25 +855,22 @@ namespace PolyFrac
     const double                          enough,
     Vector<double>                       &y)
   {
-    const Timer timer;
-    y = 0;
+    const Timer                   timer;
+    std::pair<unsigned int, bool> result;
     if (!dofs.is_distributed())
       {
-        const auto result =
-          solve_krylov(symmetric, matrix, y, rhs, *amg, limits, enough);
-        times.krylov += timer.wall_time();
-        return result;
+        y      = 0;
+        result = solve_krylov(symmetric, matrix, y, rhs, *amg, limits, enough);
       }
-    // On this rank's rows, then gathered on every rank.
-    TrilinosWrappers::MPI::Vector b(dofs.locally_owned_dofs(),
-                                    dofs.get_communicator());
-    TrilinosWrappers::MPI::Vector x(b);
-    for (const auto k : dofs.locally_owned_dofs())
-      b(k) = rhs(k);
-    b.compress(VectorOperation::insert);
-    const auto result =
-      solve_krylov(symmetric, matrix, x, b, *amg, limits, enough);
-    y = Vector<double>(x);
+    else
+      // On this rank's rows, then gathered on every rank.
+      y = solve_on_owned_rows(
+        dofs.locally_owned_dofs(),
+        dofs.get_communicator(),
+        rhs,
+        [&](auto &x, const auto &b) {
+          result = solve_krylov(symmetric, matrix, x, b, *amg, limits, enough);
+        });
     times.krylov += timer.wall_time();
     return result;
   }

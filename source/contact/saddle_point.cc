@@ -9,6 +9,29 @@ namespace PolyFrac
 {
   template <int dim>
   void
+  add_multiplier_couplings(const DoFMap<dim>                    &dofs,
+                           const std::vector<BlockCoefficients> &jumps,
+                           DynamicSparsityPattern               &pattern)
+  {
+    for (unsigned int i = 0; i < jumps.size(); ++i)
+      if (dofs.is_locally_owned_fracture_face(i))
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            for (unsigned int e = 0; e < dim; ++e)
+              pattern.add(dofs.multiplier_dof(i, d), dofs.multiplier_dof(i, e));
+            for (const auto &[block, w] : jumps[i])
+              for (unsigned int e = 0; e < dim; ++e)
+                {
+                  pattern.add(dofs.multiplier_dof(i, d), dim * block + e);
+                  pattern.add(dim * block + e, dofs.multiplier_dof(i, d));
+                }
+          }
+  }
+
+
+
+  template <int dim>
+  void
   make_saddle_point_pattern(const MeshGeometry<dim>              &geometry,
                             const DoFMap<dim>                    &dofs,
                             const std::vector<BlockCoefficients> &jumps,
@@ -22,18 +45,7 @@ namespace PolyFrac
           for (const auto b : local)
             dsp.add(a, b);
       }
-    for (unsigned int i = 0; i < jumps.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          for (unsigned int e = 0; e < dim; ++e)
-            dsp.add(dofs.multiplier_dof(i, d), dofs.multiplier_dof(i, e));
-          for (const auto &[block, w] : jumps[i])
-            for (unsigned int e = 0; e < dim; ++e)
-              {
-                dsp.add(dofs.multiplier_dof(i, d), dim * block + e);
-                dsp.add(dim * block + e, dofs.multiplier_dof(i, d));
-              }
-        }
+    add_multiplier_couplings(dofs, jumps, dsp);
     pattern.copy_from(dsp);
   }
 
@@ -104,7 +116,49 @@ namespace PolyFrac
 
 
 
-  template <int dim>
+  namespace
+  {
+    /** Row @p dof of @p matrix: zero, with @p diagonal on the diagonal. */
+    void
+    make_identity_row(SparseMatrix<double>         &matrix,
+                      const types::global_dof_index dof,
+                      const double                  diagonal)
+    {
+      for (auto entry = matrix.begin(dof); entry != matrix.end(dof); ++entry)
+        entry->value() = 0;
+      matrix.set(dof, dof, diagonal);
+    }
+
+    /** The same for a distributed Trilinos matrix (a row of this rank). */
+    void
+    make_identity_row(TrilinosWrappers::SparseMatrix &matrix,
+                      const types::global_dof_index   dof,
+                      const double                    diagonal)
+    {
+      matrix.clear_row(dof, diagonal);
+    }
+
+    /** Whether row @p dof of @p matrix is this rank's: always, for a
+     * deal.II matrix. */
+    bool
+    is_own_row(const SparseMatrix<double> &, const types::global_dof_index)
+    {
+      return true;
+    }
+
+    /** The same for a distributed Trilinos matrix. */
+    bool
+    is_own_row(const TrilinosWrappers::SparseMatrix &matrix,
+               const types::global_dof_index         dof)
+    {
+      return matrix.trilinos_matrix().RowMap().MyGID(
+        static_cast<TrilinosWrappers::types::int_type>(dof));
+    }
+  } // namespace
+
+
+
+  template <int dim, typename MatrixType>
   void
   assemble_saddle_point_jacobian(
     const std::vector<FaceLinearisation<dim>>       &faces,
@@ -112,10 +166,12 @@ namespace PolyFrac
     const std::vector<BlockCoefficients>            &jumps,
     const DoFMap<dim>                               &dofs,
     const std::map<types::global_dof_index, double> &dirichlet,
-    SparseMatrix<double>                            &jacobian)
+    MatrixType                                      &jacobian)
   {
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
+        if (!dofs.is_locally_owned_fracture_face(i))
+          continue;
         // The rows −|σ|/β Q^T (M_λ Q dλ + M_j Q d[[u]]) and the coupling
         // columns |σ| [[v]]_σ.
         const FaceLinearisation<dim> &face  = faces[i];
@@ -141,17 +197,15 @@ namespace PolyFrac
                              w * G_jump[d][e]);
             }
       }
+    jacobian.compress(VectorOperation::add);
 
     // Dirichlet dofs: an identity row scaled like the diagonal.
     for (const auto &[dof, value] : dirichlet)
-      {
-        const double diagonal =
-          std::max(std::abs(jacobian.diag_element(dof)), 1e-300);
-        for (auto entry = jacobian.begin(dof); entry != jacobian.end(dof);
-             ++entry)
-          entry->value() = 0;
-        jacobian.set(dof, dof, diagonal);
-      }
+      if (is_own_row(jacobian, dof))
+        make_identity_row(jacobian,
+                          dof,
+                          std::max(std::abs(jacobian.diag_element(dof)),
+                                   1e-300));
   }
 
 
@@ -176,10 +230,34 @@ namespace PolyFrac
     SparseMatrix<double> &);
   template void
   assemble_saddle_point_jacobian(
+    const std::vector<FaceLinearisation<2>> &,
+    const std::vector<double> &,
+    const std::vector<BlockCoefficients> &,
+    const DoFMap<2> &,
+    const std::map<types::global_dof_index, double> &,
+    TrilinosWrappers::SparseMatrix &);
+  template void
+  assemble_saddle_point_jacobian(
     const std::vector<FaceLinearisation<3>> &,
     const std::vector<double> &,
     const std::vector<BlockCoefficients> &,
     const DoFMap<3> &,
     const std::map<types::global_dof_index, double> &,
     SparseMatrix<double> &);
+  template void
+  assemble_saddle_point_jacobian(
+    const std::vector<FaceLinearisation<3>> &,
+    const std::vector<double> &,
+    const std::vector<BlockCoefficients> &,
+    const DoFMap<3> &,
+    const std::map<types::global_dof_index, double> &,
+    TrilinosWrappers::SparseMatrix &);
+  template void
+  add_multiplier_couplings(const DoFMap<2> &,
+                           const std::vector<BlockCoefficients> &,
+                           DynamicSparsityPattern &);
+  template void
+  add_multiplier_couplings(const DoFMap<3> &,
+                           const std::vector<BlockCoefficients> &,
+                           DynamicSparsityPattern &);
 } // namespace PolyFrac

@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/physics/amg_solver.h>
@@ -162,6 +163,28 @@ namespace PolyFrac
         return {control.last_step(), false};
       }
     return {control.last_step(), true};
+  }
+
+
+
+  bool
+  solve_by_mumps(const TrilinosWrappers::SparseMatrix &matrix,
+                 TrilinosWrappers::MPI::Vector        &x,
+                 const TrilinosWrappers::MPI::Vector  &rhs)
+  {
+    SolverControl                  control;
+    TrilinosWrappers::SolverDirect direct(
+      control,
+      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+    try
+      {
+        direct.solve(matrix, x, rhs);
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+    return true;
   }
 
 

@@ -8,6 +8,7 @@
 
 #include <polyfrac/base/cell_loop.h>
 #include <polyfrac/base/expressions.h>
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/elasticity.h>
 
@@ -578,30 +579,29 @@ namespace PolyFrac
   Elasticity<dim>::solve_distributed(const Vector<double> &load,
                                      Vector<double>       &u)
   {
-    const MPI_Comm                communicator = dofs.get_communicator();
-    TrilinosWrappers::MPI::Vector b(dofs.locally_owned_dofs(), communicator);
-    TrilinosWrappers::MPI::Vector x(b);
-    for (const auto i : dofs.locally_owned_dofs())
-      b(i) = load(i);
-    b.compress(VectorOperation::insert);
     unsigned int iterations = 0;
-    if (prm.solver.method == "direct")
-      {
-        if (!distributed_direct)
+    u                       = solve_on_owned_rows(
+      dofs.locally_owned_dofs(),
+      dofs.get_communicator(),
+      load,
+      [&](auto &x, const auto &b) {
+        if (prm.solver.method == "direct")
           {
-            distributed_direct =
-              std::make_unique<TrilinosWrappers::SolverDirect>(
-                direct_control,
-                TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                               "Amesos_Mumps"));
-            distributed_direct->initialize(trilinos_matrix);
+            if (!distributed_direct)
+              {
+                distributed_direct =
+                  std::make_unique<TrilinosWrappers::SolverDirect>(
+                    direct_control,
+                    TrilinosWrappers::SolverDirect::AdditionalData(
+                      false, "Amesos_Mumps"));
+                distributed_direct->initialize(trilinos_matrix);
+              }
+            distributed_direct->solve(x, b);
           }
-        distributed_direct->solve(x, b);
-      }
-    else
-      iterations = solve_cg_amg(
-        trilinos_matrix, x, b, dofs, geometry.mesh.vertices, prm.solver);
-    u = Vector<double>(x);
+        else
+          iterations = solve_cg_amg(
+            trilinos_matrix, x, b, dofs, geometry.mesh.vertices, prm.solver);
+      });
     return iterations;
   }
 

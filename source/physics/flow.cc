@@ -10,7 +10,9 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/discretization/hybrid_finite_volume.h>
+#include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/flow.h>
 
 #include <algorithm>
@@ -473,50 +475,30 @@ namespace PolyFrac
   {
     // The rows each rank writes: those of its polytopes and fracture
     // faces, some of them other ranks'.
-    const IndexSet        &owned = dofs.locally_owned_dofs();
-    DynamicSparsityPattern written(dofs.n_dofs());
-    make_pattern(written);
-    IndexSet writable(dofs.n_dofs());
-    for (types::global_dof_index row = 0; row < dofs.n_dofs(); ++row)
-      if (written.row_length(row) > 0)
-        writable.add_index(row);
-    writable.compress();
-    TrilinosWrappers::SparsityPattern pattern(owned,
-                                              owned,
-                                              writable,
-                                              dofs.get_communicator());
-    make_pattern(pattern);
-    pattern.compress();
+    DynamicSparsityPattern entries(dofs.n_dofs());
+    make_pattern(entries);
+    TrilinosWrappers::SparsityPattern pattern;
+    make_distributed_pattern(entries,
+                             dofs.locally_owned_dofs(),
+                             dofs.get_communicator(),
+                             pattern);
     TrilinosWrappers::SparseMatrix matrix;
     matrix.reinit(pattern);
     Vector<double> rhs;
     assemble(data, previous, constraints, matrix, rhs);
 
-    TrilinosWrappers::MPI::Vector b(owned, dofs.get_communicator());
-    TrilinosWrappers::MPI::Vector x(b);
-    for (const auto k : owned)
-      b(k) = rhs(k);
-    b.compress(VectorOperation::insert);
     unsigned int iterations = 0;
-    if (prm.solver.method == "direct")
-      {
-        SolverControl                  control;
-        TrilinosWrappers::SolverDirect direct(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         "Amesos_Mumps"));
-        try
-          {
-            direct.solve(matrix, x, b);
-          }
-        catch (const std::exception &)
-          {
-            AssertThrow(false, ExcMessage(singular_message));
-          }
-      }
-    else
-      iterations = solve_cg(matrix, b, x);
-    pressure = Vector<double>(x);
+    pressure =
+      solve_on_owned_rows(dofs.locally_owned_dofs(),
+                          dofs.get_communicator(),
+                          rhs,
+                          [&](auto &x, const auto &b) {
+                            if (prm.solver.method != "direct")
+                              iterations = solve_cg(matrix, b, x);
+                            else
+                              AssertThrow(solve_by_mumps(matrix, x, b),
+                                          ExcMessage(singular_message));
+                          });
     return iterations;
   }
 

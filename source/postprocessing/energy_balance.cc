@@ -62,10 +62,13 @@ namespace PolyFrac
       }
     const types::global_dof_index n = dofs.n_displacement_dofs();
     DynamicSparsityPattern        pattern(n);
+    // Distributed, each rank assembles its own polytopes (add_mechanics()
+    // sums the products).
     for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
-      for (const auto i : dofs.cell_dofs(c))
-        for (const auto j : dofs.cell_dofs(c))
-          pattern.add(i, j);
+      if (dofs.is_locally_owned_cell(c))
+        for (const auto i : dofs.cell_dofs(c))
+          for (const auto j : dofs.cell_dofs(c))
+            pattern.add(i, j);
     sparsity.copy_from(pattern);
     stiffness.reinit(sparsity);
     Vector<double> unused(n);

@@ -92,8 +92,7 @@ namespace PolyFrac
     void
     report_checks(std::ostream &out) const;
     /** Throws if the scene needs what runs on one rank only so far
-     * (adaptive refinement) and #communicator has more. (ContactMechanics
-     * refuses its saddle-point solve on several ranks itself.) */
+     * (adaptive refinement) and #communicator has more. */
     void
     check_distributable() const;
 

@@ -1,7 +1,12 @@
 #ifndef polyfrac_base_mpi_h
 #define polyfrac_base_mpi_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 namespace PolyFrac
 {
@@ -36,6 +41,39 @@ namespace PolyFrac
   is_root_rank(const MPI_Comm communicator)
   {
     return this_mpi_rank(communicator) == 0;
+  }
+
+  /**
+   * @p pattern: the rows @p owned of this rank (and the same columns) of a
+   * matrix to which each rank adds @p entries, its own contributions, some
+   * of them in other ranks' rows: those rows are writable here, and the
+   * entries reach their owners when @p pattern is compressed (here).
+   */
+  void
+  make_distributed_pattern(const DynamicSparsityPattern      &entries,
+                           const IndexSet                    &owned,
+                           const MPI_Comm                     communicator,
+                           TrilinosWrappers::SparsityPattern &pattern);
+
+  /**
+   * A solve on the rows @p owned of this rank: the whole @p rhs restricted
+   * to them is `b`, `solve(x, b)` fills `x` (both distributed Trilinos
+   * vectors on @p owned), and x is returned whole on every rank.
+   */
+  template <typename Solve>
+  Vector<double>
+  solve_on_owned_rows(const IndexSet       &owned,
+                      const MPI_Comm        communicator,
+                      const Vector<double> &rhs,
+                      const Solve          &solve)
+  {
+    TrilinosWrappers::MPI::Vector b(owned, communicator);
+    TrilinosWrappers::MPI::Vector x(b);
+    for (const auto k : owned)
+      b(k) = rhs(k);
+    b.compress(VectorOperation::insert);
+    solve(x, b);
+    return Vector<double>(x);
   }
 } // namespace PolyFrac
 

@@ -72,7 +72,11 @@ namespace PolyFrac
    * definite) and solved by CG + AMG; in a Coulomb step in which a face
    * slips in contact the condensed operator is non-symmetric and GMRES +
    * AMG solves it, with UMFPACK on the saddle point when GMRES does not
-   * converge (reported on the step's line).
+   * converge (reported on the step's line). On several MPI ranks the
+   * operators are distributed Trilinos matrices (each rank owns the rows
+   * of DoFMap::distribute_among_ranks(), multipliers with their fracture
+   * face) and MUMPS replaces UMFPACK; the vectors are whole on every rank,
+   * so that all ranks take the same decisions.
    *
    * Nested iteration: given the multipliers and states of a coarser level
    * (start_from()), each face takes those of the nearest coarse face
@@ -212,6 +216,28 @@ namespace PolyFrac
                 const bool         given_states,
                 Vector<double>    &step);
 
+    /** The rows of the saddle-point system that are this rank's: its
+     * displacement dofs and the multipliers of its fracture faces. */
+    IndexSet
+    locally_owned_unknowns() const;
+
+    /** The saddle-point Jacobian of @p R as a distributed Trilinos matrix:
+     * each rank's rows of A and the couplings of its fracture faces. */
+    void
+    make_distributed_jacobian(const Residual                 &R,
+                              TrilinosWrappers::SparseMatrix &jacobian) const;
+
+    /**
+     * The Newton step for @p R on several ranks: the saddle-point Jacobian
+     * as a distributed Trilinos matrix (each rank's rows of A and the
+     * couplings of its fracture faces), solved by MUMPS; @p step gets the
+     * whole step on every rank.
+     */
+    void
+    distributed_saddle_point_step(const Residual    &R,
+                                  const unsigned int iteration,
+                                  Vector<double>    &step) const;
+
     /**
      * The error message for a Newton Jacobian that is singular or nearly
      * so (@p symptom: what showed it) at Newton iteration @p iteration:
@@ -268,13 +294,14 @@ namespace PolyFrac
      * Linear solver/Method = direct in the displacement block of the
      * saddle-point pattern (`sparsity`, `stiffness`); with the condensed
      * steps as a Trilinos matrix on the graph of the reduced operators
-     * (`reduced_graph_stiffness`, FaceCondensation::pattern()), and then
+     * (`trilinos_stiffness`, FaceCondensation::pattern()), and then
      * `sparsity` and `stiffness` stay empty (benchmarks/README.md, "Memory
-     * budget").
+     * budget"). On several ranks A is always `trilinos_stiffness`, whose
+     * rows each rank owns (on the cell blocks with Method = direct).
      */
     SparsityPattern                sparsity;
     SparseMatrix<double>           stiffness;
-    TrilinosWrappers::SparseMatrix reduced_graph_stiffness;
+    TrilinosWrappers::SparseMatrix trilinos_stiffness;
     Vector<double>                 load_vector;
     double                         load_norm;
     /** The loads of Elasticity at time load_time (set_loads() reuses them). */

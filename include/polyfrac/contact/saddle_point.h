@@ -2,6 +2,7 @@
 #define polyfrac_contact_saddle_point_h
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -39,6 +40,17 @@ namespace PolyFrac
     /** |σ|. */
     double measure;
   };
+
+  /**
+   * Adds the couplings of this rank's fracture faces (all of them on one
+   * rank) to @p pattern: per face the d × d multiplier block and its
+   * coupling to the dofs of [[u]]_σ (@p jumps), both ways.
+   */
+  template <int dim>
+  void
+  add_multiplier_couplings(const DoFMap<dim>                    &dofs,
+                           const std::vector<BlockCoefficients> &jumps,
+                           DynamicSparsityPattern               &pattern);
 
   /**
    * The pattern of the contact saddle-point system (u, λ): the cell blocks
@@ -106,13 +118,16 @@ namespace PolyFrac
   /**
    * The generalised Jacobian of the contact saddle-point system: @p
    * jacobian holds A in its displacement block on entry (and zeros
-   * elsewhere); this adds the coupling columns
+   * elsewhere); this adds, for this rank's fracture faces (all of them on
+   * one rank), the coupling columns
    * |σ| [[v]]_σ and, per face, the rows −|σ|/β_σ Q^T (M_λ Q dλ + M_j Q
    * d[[u]]), so that on a face in stick and contact the row block is the
    * transpose of the coupling. The rows of the fixed dofs (@p dirichlet)
-   * become identity rows scaled like the diagonal of A.
+   * that are this rank's become identity rows scaled like the diagonal of
+   * A. MatrixType: SparseMatrix<double>, or a distributed
+   * TrilinosWrappers::SparseMatrix (which this compresses).
    */
-  template <int dim>
+  template <int dim, typename MatrixType>
   void
   assemble_saddle_point_jacobian(
     const std::vector<FaceLinearisation<dim>>       &faces,
@@ -120,7 +135,7 @@ namespace PolyFrac
     const std::vector<BlockCoefficients>            &jumps,
     const DoFMap<dim>                               &dofs,
     const std::map<types::global_dof_index, double> &dirichlet,
-    SparseMatrix<double>                            &jacobian);
+    MatrixType                                      &jacobian);
 } // namespace PolyFrac
 
 #endif

@@ -76,6 +76,16 @@ namespace PolyFrac
                const double                             enough = 0.);
 
   /**
+   * Solves @p matrix @p x = @p rhs by MUMPS (Trilinos' Amesos) on the ranks
+   * of the distributed @p matrix; false if MUMPS fails (a singular
+   * matrix): the caller says what that means.
+   */
+  bool
+  solve_by_mumps(const TrilinosWrappers::SparseMatrix &matrix,
+                 TrilinosWrappers::MPI::Vector        &x,
+                 const TrilinosWrappers::MPI::Vector  &rhs);
+
+  /**
    * Solves @p matrix @p x = @p rhs by CG preconditioned with the AMG of
    * initialize_amg() (the elasticity system). Rows fixed by constraints
    * stay in the matrix as decoupled diagonal rows. Returns the number of CG

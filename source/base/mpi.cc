@@ -1,0 +1,30 @@
+#include <polyfrac/base/mpi.h>
+
+#include <vector>
+
+namespace PolyFrac
+{
+  void
+  make_distributed_pattern(const DynamicSparsityPattern      &entries,
+                           const IndexSet                    &owned,
+                           const MPI_Comm                     communicator,
+                           TrilinosWrappers::SparsityPattern &pattern)
+  {
+    IndexSet writable(entries.n_rows());
+    for (types::global_dof_index row = 0; row < entries.n_rows(); ++row)
+      if (entries.row_length(row) > 0)
+        writable.add_index(row);
+    writable.compress();
+    pattern.reinit(owned, owned, writable, communicator);
+    std::vector<types::global_dof_index> columns;
+    for (const auto row : writable)
+      {
+        columns.clear();
+        for (auto entry = entries.begin(row); entry != entries.end(row);
+             ++entry)
+          columns.push_back(entry->column());
+        pattern.add_entries(row, columns.begin(), columns.end(), true);
+      }
+    pattern.compress();
+  }
+} // namespace PolyFrac
