@@ -23,10 +23,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mechanics_models.h>
 
-#include "../tests.h"
+#include "parallel_tests.h"
 
 using namespace PolyFrac;
 
@@ -36,11 +35,10 @@ namespace
   std::pair<MechanicalState<3>, Errors>
   solve(const Parameters &prm, const MPI_Comm communicator)
   {
-    const LevelDiscretization<3> discretization(prm, 0, communicator);
-    ContactMechanicsModel<3>     model(prm, discretization);
-    std::ostringstream           ignored;
-    model.step(0, 0, ignored);
-    return {model.mechanical_state(), model.errors(0)};
+    return Testing::run_first_level<3, ContactMechanicsModel<3>>(
+      prm, communicator, [](const ContactMechanicsModel<3> &model) {
+        return std::pair(model.mechanical_state(), model.errors(0));
+      });
   }
 
   /** The relative difference of two lists of multipliers. */
@@ -65,10 +63,9 @@ namespace
     const auto [distributed, e_distributed] = solve(prm, MPI_COMM_WORLD);
     const auto [serial, e_serial]           = solve(prm, MPI_COMM_SELF);
 
-    Vector<double> difference(distributed.displacement);
-    difference -= serial.displacement;
     const double u_difference =
-      difference.l2_norm() / serial.displacement.l2_norm();
+      Testing::relative_difference(distributed.displacement,
+                                   serial.displacement);
     const double lambda_difference =
       relative_difference(distributed.multipliers, serial.multipliers);
     unsigned int n_other_states = 0;
@@ -122,8 +119,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-              ExcMessage("Run this test on 2 ranks."));
+  Testing::require_two_ranks();
   for (const std::string method : {"direct", "AMG"})
     {
       const std::vector<std::string> common = {"Linear solver/Method=" + method,

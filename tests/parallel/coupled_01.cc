@@ -19,10 +19,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <polyfrac/app/flow_model.h>
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/poromechanics_model.h>
 
-#include "../tests.h"
+#include "parallel_tests.h"
 
 using namespace PolyFrac;
 
@@ -41,30 +40,17 @@ namespace
   Result<dim>
   run(const Parameters &prm, const MPI_Comm communicator)
   {
-    const LevelDiscretization<dim> discretization(prm, 0, communicator);
-    ModelType                      model(prm, discretization);
-    std::ostringstream             ignored;
-    const double                   dt = prm.time.time_step;
-    for (double t = 0; t < prm.time.end_time - 1e-12 * dt; t += dt)
-      model.step(t, t + dt, ignored);
-    Result<dim> result;
-    result.pressure = model.pressures();
-    if constexpr (std::is_same_v<ModelType, PoromechanicsModel<dim>>)
-      {
-        result.displacement = model.mechanical_state().displacement;
-        result.contact      = model.mechanical_state().contact;
-      }
-    return result;
-  }
-
-  double
-  relative_difference(const Vector<double> &a, const Vector<double> &b)
-  {
-    if (b.size() == 0)
-      return 0;
-    Vector<double> difference(a);
-    difference -= b;
-    return difference.l2_norm() / b.l2_norm();
+    return Testing::run_first_level<dim, ModelType>(
+      prm, communicator, [](const ModelType &model) {
+        Result<dim> result;
+        result.pressure = model.pressures();
+        if constexpr (std::is_same_v<ModelType, PoromechanicsModel<dim>>)
+          {
+            result.displacement = model.mechanical_state().displacement;
+            result.contact      = model.mechanical_state().contact;
+          }
+        return result;
+      });
   }
 
   template <int dim, typename ModelType>
@@ -77,9 +63,10 @@ namespace
     const auto   distributed = run<dim, ModelType>(prm, MPI_COMM_WORLD);
     const auto   serial      = run<dim, ModelType>(prm, MPI_COMM_SELF);
     const double p_difference =
-      relative_difference(distributed.pressure, serial.pressure);
+      Testing::relative_difference(distributed.pressure, serial.pressure);
     const double u_difference =
-      relative_difference(distributed.displacement, serial.displacement);
+      Testing::relative_difference(distributed.displacement,
+                                   serial.displacement);
     unsigned int n_other_states = 0;
     for (unsigned int i = 0; i < serial.contact.normal.size(); ++i)
       n_other_states +=
@@ -118,8 +105,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-              ExcMessage("Run this test on 2 ranks."));
+  Testing::require_two_ranks();
   for (const std::string method : {"direct", "AMG"})
     {
       check<2, FlowModel<2>>("flow-2d-network.prm", method);

@@ -11,10 +11,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mechanics_models.h>
 
-#include "../tests.h"
+#include "parallel_tests.h"
 
 using namespace PolyFrac;
 
@@ -46,11 +45,10 @@ namespace
   std::pair<Vector<double>, Errors>
   solve(const Parameters &prm, const MPI_Comm communicator)
   {
-    const LevelDiscretization<3> discretization(prm, 0, communicator);
-    ElasticityModel<3>           model(prm, discretization);
-    std::ostringstream           ignored;
-    model.step(0, 0, ignored);
-    return {model.displacement(), model.errors(0)};
+    return Testing::run_first_level<3, ElasticityModel<3>>(
+      prm, communicator, [](const ElasticityModel<3> &model) {
+        return std::pair(model.displacement(), model.errors(0));
+      });
   }
 
   void
@@ -60,9 +58,8 @@ namespace
     const auto [u_distributed, e_distributed] = solve(prm, MPI_COMM_WORLD);
     const auto [u_serial, e_serial]           = solve(prm, MPI_COMM_SELF);
 
-    Vector<double> difference(u_distributed);
-    difference -= u_serial;
-    const double relative = difference.l2_norm() / u_serial.l2_norm();
+    const double relative =
+      Testing::relative_difference(u_distributed, u_serial);
     const double tolerance =
       method == "direct" ? 1e-10 : 100 * prm.solver.tolerance;
     const double error_difference =
@@ -88,8 +85,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-              ExcMessage("Run this test on 2 ranks."));
+  Testing::require_two_ranks();
   for (const std::string method : {"direct", "AMG"})
     for (const unsigned int cells_per_polytope : {1u, 4u})
       check(method, cells_per_polytope);
