@@ -24,6 +24,14 @@ long_tests=(
   # the GMRES step itself is checked in Debug by contact/face_condensation_01.
   polyfrac/equal_runs_coulomb_amg_2d
   polyfrac/equal_runs_coulomb_amg_3d
+  # 2 ranks (each holds both cores), Debug + sanitizer wall times of
+  # 2026-11-24 (idle machine), where all three passed. The distributed
+  # contact, flow and poromechanics paths stay in the Debug suite through
+  # parallel/b2_3d_tresca_2_ranks_AMG (19 s), flow_2d_network_2_ranks_AMG
+  # (17 s) and elasticity_01 (47 s).
+  parallel/contact_01.mpirun=2 # 158 s (Release 4.3 s)
+  parallel/coupled_01.mpirun=2 # 182 s (Release 2.3 s)
+  parallel/poromechanics_2d_slip_2_ranks_AMG # 86 s (Release 2.3 s)
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \
