@@ -92,26 +92,17 @@ namespace PolyFrac
                                                   dofs.locally_owned_dofs(),
                                                   dofs.locally_relevant_dofs(),
                                                   dofs.get_communicator());
-        for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-          if (dofs.is_locally_owned_cell(c))
-            {
-              const auto local = dofs.cell_dofs(c);
-              for (const auto row : local)
-                pattern.add_entries(row, local.begin(), local.end());
-            }
+        dofs.add_cell_couplings(pattern);
         pattern.compress();
         trilinos_stiffness.reinit(pattern);
         elasticity.assemble_operator(trilinos_stiffness, load_vector);
       }
     else
       {
-        make_saddle_point_pattern(geometry, dofs, jumps, sparsity);
+        make_saddle_point_pattern(dofs, jumps, sparsity);
         stiffness.reinit(sparsity);
         elasticity.assemble_operator(stiffness, load_vector);
       }
-    // Each rank has added the loads of its polytopes and faces.
-    if (dofs.is_distributed())
-      Utilities::MPI::sum(load_vector, dofs.get_communicator(), load_vector);
     compute_load_norm();
 
     solution.reinit(n);
@@ -180,10 +171,6 @@ namespace PolyFrac
         make_dirichlet_values();
         elastic_load.reinit(load_vector.size());
         elasticity.assemble_load(elastic_load);
-        if (dofs.is_distributed())
-          Utilities::MPI::sum(elastic_load,
-                              dofs.get_communicator(),
-                              elastic_load);
         load_time = t;
       }
     load_vector = elastic_load;
@@ -426,7 +413,7 @@ namespace PolyFrac
     const SparsityPattern *pattern = &sparsity;
     if (condensation)
       {
-        make_saddle_point_pattern(geometry, dofs, jumps, step_pattern);
+        make_saddle_point_pattern(dofs, jumps, step_pattern);
         pattern = &step_pattern;
       }
     SparseMatrix<double> jacobian(*pattern);
@@ -474,42 +461,27 @@ namespace PolyFrac
 
   template <int dim>
   void
-  ContactMechanics<dim>::make_distributed_jacobian(
-    const Residual                 &R,
-    TrilinosWrappers::SparseMatrix &jacobian) const
+  ContactMechanics<dim>::make_saddle_point_pattern_on_ranks()
   {
     // The entries this rank adds: its rows of A and the couplings of its
     // fracture faces (some of them in other ranks' rows).
     const Epetra_CrsMatrix &A = trilinos_stiffness.trilinos_matrix();
     DynamicSparsityPattern  entries(solution.size());
-    std::vector<std::vector<types::global_dof_index>> columns(A.NumMyRows());
+    std::vector<types::global_dof_index> columns;
     for (int local = 0; local < A.NumMyRows(); ++local)
       {
         const StiffnessRow row =
           stiffness_row(trilinos_stiffness, A.GRID(local));
-        for (int e = 0; e < row.length; ++e)
-          columns[local].push_back(row.column(e));
-        entries.add_entries(A.GRID(local),
-                            columns[local].begin(),
-                            columns[local].end());
+        row.get_columns(columns);
+        entries.add_entries(A.GRID(local), columns.begin(), columns.end());
       }
     add_multiplier_couplings(dofs, jumps, entries);
-    TrilinosWrappers::SparsityPattern pattern;
+    saddle_point_pattern =
+      std::make_unique<TrilinosWrappers::SparsityPattern>();
     make_distributed_pattern(entries,
                              locally_owned_unknowns(),
                              dofs.get_communicator(),
-                             pattern);
-
-    jacobian.reinit(pattern);
-    for (int local = 0; local < A.NumMyRows(); ++local)
-      jacobian.add(A.GRID(local),
-                   columns[local].size(),
-                   columns[local].data(),
-                   stiffness_row(trilinos_stiffness, A.GRID(local)).values,
-                   false,
-                   false);
-    assemble_saddle_point_jacobian(
-      R.faces, beta, jumps, dofs, dirichlet, jacobian);
+                             *saddle_point_pattern);
   }
 
 
@@ -519,14 +491,33 @@ namespace PolyFrac
   ContactMechanics<dim>::distributed_saddle_point_step(
     const Residual    &R,
     const unsigned int iteration,
-    Vector<double>    &step) const
+    Vector<double>    &step)
   {
+    if (!saddle_point_pattern)
+      make_saddle_point_pattern_on_ranks();
     TrilinosWrappers::SparseMatrix jacobian;
-    make_distributed_jacobian(R, jacobian);
+    jacobian.reinit(*saddle_point_pattern);
+    const Epetra_CrsMatrix &A = trilinos_stiffness.trilinos_matrix();
+    std::vector<types::global_dof_index> columns;
+    for (int local = 0; local < A.NumMyRows(); ++local)
+      {
+        const StiffnessRow row =
+          stiffness_row(trilinos_stiffness, A.GRID(local));
+        row.get_columns(columns);
+        jacobian.add(A.GRID(local),
+                     columns.size(),
+                     columns.data(),
+                     row.values,
+                     false,
+                     false);
+      }
+    assemble_saddle_point_jacobian(
+      R.faces, beta, jumps, dofs, dirichlet, jacobian);
+
     Vector<double> rhs(R.vector);
     rhs *= -1.;
     step = solve_on_owned_rows(
-      locally_owned_unknowns(),
+      saddle_point_pattern->locally_owned_range_indices(),
       dofs.get_communicator(),
       rhs,
       [&](auto &x, const auto &b) {

@@ -103,16 +103,10 @@ namespace PolyFrac
     // fracture faces add to (some of them other ranks' rows).
     DynamicSparsityPattern                 dsp(n_u);
     std::vector<std::vector<unsigned int>> bubble_cells(jumps.size());
+    dofs.add_cell_couplings(dsp);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-      {
-        for (const unsigned int i : dofs.cell_bubbles(c))
-          bubble_cells[i].push_back(c);
-        if (!dofs.is_locally_owned_cell(c))
-          continue;
-        const auto local = dofs.cell_dofs(c);
-        for (const auto row : local)
-          dsp.add_entries(row, local.begin(), local.end());
-      }
+      for (const unsigned int i : dofs.cell_bubbles(c))
+        bubble_cells[i].push_back(c);
     // The couplings of the face stencils through the rows of A on the
     // bubbles (those rows are the dofs of the cells the bubble enters).
     for (unsigned int i = 0; i < jumps.size(); ++i)

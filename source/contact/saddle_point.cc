@@ -32,19 +32,12 @@ namespace PolyFrac
 
   template <int dim>
   void
-  make_saddle_point_pattern(const MeshGeometry<dim>              &geometry,
-                            const DoFMap<dim>                    &dofs,
+  make_saddle_point_pattern(const DoFMap<dim>                    &dofs,
                             const std::vector<BlockCoefficients> &jumps,
                             SparsityPattern                      &pattern)
   {
     DynamicSparsityPattern dsp(dofs.n_displacement_dofs() + dim * jumps.size());
-    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
-      {
-        const auto local = dofs.cell_dofs(c);
-        for (const auto a : local)
-          for (const auto b : local)
-            dsp.add(a, b);
-      }
+    dofs.add_cell_couplings(dsp);
     add_multiplier_couplings(dofs, jumps, dsp);
     pattern.copy_from(dsp);
   }
@@ -211,13 +204,11 @@ namespace PolyFrac
 
 
   template void
-  make_saddle_point_pattern(const MeshGeometry<2> &,
-                            const DoFMap<2> &,
+  make_saddle_point_pattern(const DoFMap<2> &,
                             const std::vector<BlockCoefficients> &,
                             SparsityPattern &);
   template void
-  make_saddle_point_pattern(const MeshGeometry<3> &,
-                            const DoFMap<3> &,
+  make_saddle_point_pattern(const DoFMap<3> &,
                             const std::vector<BlockCoefficients> &,
                             SparsityPattern &);
   template void

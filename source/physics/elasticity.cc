@@ -286,8 +286,10 @@ namespace PolyFrac
   {
     AffineConstraints<double> none;
     none.close();
-    assemble_cells(none, system_matrix, system_rhs);
-    assemble_face_loads(none, system_rhs, false);
+    Vector<double> loads(system_rhs.size());
+    assemble_cells(none, system_matrix, loads);
+    assemble_face_loads(none, loads, false);
+    add_over_ranks(loads, system_rhs);
   }
 
 
@@ -306,9 +308,23 @@ namespace PolyFrac
     Vector<double> cell_loads(system_matrix.m());
     assemble_cells(none, system_matrix, cell_loads);
     system_matrix.compress(VectorOperation::add);
+    Vector<double> loads(system_rhs.size());
     for (types::global_dof_index i = 0; i < cell_loads.size(); ++i)
-      system_rhs(i) += cell_loads(i);
-    assemble_face_loads(none, system_rhs, false);
+      loads(i) = cell_loads(i);
+    assemble_face_loads(none, loads, false);
+    add_over_ranks(loads, system_rhs);
+  }
+
+
+
+  template <int dim>
+  void
+  Elasticity<dim>::add_over_ranks(Vector<double> &loads,
+                                  Vector<double> &system_rhs) const
+  {
+    if (dofs.is_distributed())
+      Utilities::MPI::sum(loads, dofs.get_communicator(), loads);
+    system_rhs += loads;
   }
 
 
@@ -453,6 +469,7 @@ namespace PolyFrac
   void
   Elasticity<dim>::assemble_load(Vector<double> &system_rhs) const
   {
+    Vector<double> loads(system_rhs.size());
     for (unsigned int cell = 0; cell < geometry.mesh.n_cells(); ++cell)
       if (dofs.is_locally_owned_cell(cell))
         {
@@ -461,11 +478,12 @@ namespace PolyFrac
             cell_load(local, cell, *body_force, *initial_stress);
           const auto local_dofs = dofs.cell_dofs(cell);
           for (unsigned int k = 0; k < b.size(); ++k)
-            system_rhs(local_dofs[k]) += b(k);
+            loads(local_dofs[k]) += b(k);
         }
     AffineConstraints<double> none;
     none.close();
-    assemble_face_loads(none, system_rhs, false);
+    assemble_face_loads(none, loads, false);
+    add_over_ranks(loads, system_rhs);
   }
 
 

@@ -64,11 +64,7 @@ namespace PolyFrac
     DynamicSparsityPattern        pattern(n);
     // Distributed, each rank assembles its own polytopes (add_mechanics()
     // sums the products).
-    for (unsigned int c = 0; c < geometry.mesh.n_cells(); ++c)
-      if (dofs.is_locally_owned_cell(c))
-        for (const auto i : dofs.cell_dofs(c))
-          for (const auto j : dofs.cell_dofs(c))
-            pattern.add(i, j);
+    dofs.add_cell_couplings(pattern);
     sparsity.copy_from(pattern);
     stiffness.reinit(sparsity);
     Vector<double> unused(n);
@@ -123,7 +119,7 @@ namespace PolyFrac
     du -= u0;
     Vector<double> Au0(n), Au1(n), Adu(n);
     // Distributed, each rank holds the stiffness of its own polytopes:
-    // the products are summed over the ranks, and so is the load.
+    // the products are summed over the ranks.
     const auto multiply = [&](const Vector<double> &v, Vector<double> &Av) {
       stiffness.vmult(Av, v);
       if (dofs.is_distributed())
@@ -143,8 +139,6 @@ namespace PolyFrac
     // cancel against the flow equations (doc/energy.md §2).
     Vector<double> load(n);
     elasticity.assemble_load(load);
-    if (dofs.is_distributed())
-      Utilities::MPI::sum(load, dofs.get_communicator(), load);
     terms.work.emplace_back("loads", load * du);
     Vector<double> R(Au1);
     R -= load;

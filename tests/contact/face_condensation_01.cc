@@ -107,7 +107,7 @@ check(const unsigned int subdivisions, const unsigned int n_states)
   for (unsigned int i = 0; i < n_faces; ++i)
     jumps.push_back(jump(geometry, dofs, network, i));
   SparsityPattern pattern;
-  make_saddle_point_pattern(geometry, dofs, jumps, pattern);
+  make_saddle_point_pattern(dofs, jumps, pattern);
   SparseMatrix<double> stiffness(pattern);
   Vector<double>       load(pattern.n_rows());
   elasticity.assemble_operator(stiffness, load);

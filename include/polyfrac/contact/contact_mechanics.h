@@ -221,22 +221,21 @@ namespace PolyFrac
     IndexSet
     locally_owned_unknowns() const;
 
-    /** The saddle-point Jacobian of @p R as a distributed Trilinos matrix:
-     * each rank's rows of A and the couplings of its fracture faces. */
+    /** #saddle_point_pattern: each rank's rows of A and the couplings of
+     * its fracture faces, on locally_owned_unknowns(). */
     void
-    make_distributed_jacobian(const Residual                 &R,
-                              TrilinosWrappers::SparseMatrix &jacobian) const;
+    make_saddle_point_pattern_on_ranks();
 
     /**
      * The Newton step for @p R on several ranks: the saddle-point Jacobian
-     * as a distributed Trilinos matrix (each rank's rows of A and the
-     * couplings of its fracture faces), solved by MUMPS; @p step gets the
-     * whole step on every rank.
+     * as a distributed Trilinos matrix on #saddle_point_pattern (made at
+     * the first such step), solved by MUMPS; @p step gets the whole step on
+     * every rank.
      */
     void
     distributed_saddle_point_step(const Residual    &R,
                                   const unsigned int iteration,
-                                  Vector<double>    &step) const;
+                                  Vector<double>    &step);
 
     /**
      * The error message for a Newton Jacobian that is singular or nearly
@@ -302,8 +301,11 @@ namespace PolyFrac
     SparsityPattern                sparsity;
     SparseMatrix<double>           stiffness;
     TrilinosWrappers::SparseMatrix trilinos_stiffness;
-    Vector<double>                 load_vector;
-    double                         load_norm;
+    /** The pattern of the saddle-point Jacobian on several ranks (it
+     * depends on the mesh only). */
+    std::unique_ptr<TrilinosWrappers::SparsityPattern> saddle_point_pattern;
+    Vector<double>                                     load_vector;
+    double                                             load_norm;
     /** The loads of Elasticity at time load_time (set_loads() reuses them). */
     Vector<double> elastic_load;
     double         load_time = std::numeric_limits<double>::quiet_NaN();

@@ -59,8 +59,7 @@ namespace PolyFrac
    */
   template <int dim>
   void
-  make_saddle_point_pattern(const MeshGeometry<dim>              &geometry,
-                            const DoFMap<dim>                    &dofs,
+  make_saddle_point_pattern(const DoFMap<dim>                    &dofs,
                             const std::vector<BlockCoefficients> &jumps,
                             SparsityPattern                      &pattern);
 
@@ -82,6 +81,15 @@ namespace PolyFrac
     column(const int e) const
     {
       return column_map->GID(columns[e]);
+    }
+
+    /** The dofs of all entries, into @p dofs. */
+    void
+    get_columns(std::vector<types::global_dof_index> &dofs) const
+    {
+      dofs.resize(length);
+      for (int e = 0; e < length; ++e)
+        dofs[e] = column(e);
     }
   };
 

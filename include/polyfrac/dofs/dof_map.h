@@ -227,6 +227,24 @@ namespace PolyFrac
     cell_dofs(const unsigned int c) const;
 
     /**
+     * Adds the couplings of the polytopes of this rank (all of them on one
+     * rank), the blocks cell_dofs() × cell_dofs(), to @p pattern: a
+     * DynamicSparsityPattern or a TrilinosWrappers::SparsityPattern.
+     */
+    template <typename PatternType>
+    void
+    add_cell_couplings(PatternType &pattern) const
+    {
+      for (unsigned int c = 0; c < n_cells(); ++c)
+        if (is_locally_owned_cell(c))
+          {
+            const auto local = cell_dofs(c);
+            for (const auto row : local)
+              pattern.add_entries(row, local.begin(), local.end());
+          }
+    }
+
+    /**
      * The named blocks of the displacement and multiplier unknowns, in dof
      * order: "node-side displacement" (dim per node side), "bubble" (dim
      * per fracture face) and "multiplier" (dim per fracture face, used by

@@ -159,8 +159,9 @@ namespace PolyFrac
      * Adds the unconstrained load F (body force, Neumann traction, fracture
      * pressure of Fractures/Pressure; no prescribed traction) at the time of
      * set_time() to @p system_rhs, which may be larger than the
-     * displacement block. Distributed, each rank adds the loads of its own
-     * polytopes and faces: the caller sums @p system_rhs over the ranks.
+     * displacement block. Distributed, each rank computes the loads of its
+     * own polytopes and faces, and every rank adds their sum over the
+     * ranks.
      */
     void
     assemble_load(Vector<double> &system_rhs) const;
@@ -179,7 +180,7 @@ namespace PolyFrac
      * The same, into a Trilinos matrix of the displacement dofs (built on
      * a pattern that holds the cell blocks), which is compressed;
      * @p system_rhs may be longer than the matrix. Distributed, each rank
-     * assembles its own polytopes and adds their loads (see
+     * assembles its own polytopes (and adds the loads of all, see
      * assemble_load()).
      */
     void
@@ -187,6 +188,11 @@ namespace PolyFrac
                       Vector<double>                 &system_rhs) const;
 
   private:
+    /** @p system_rhs += @p loads summed over the ranks (each rank's
+     * contributions on entry; @p loads holds the sum on return). */
+    void
+    add_over_ranks(Vector<double> &loads, Vector<double> &system_rhs) const;
+
     /**
      * solve() on more than one rank: @p load (whole on every rank) restricted
      * to this rank's dofs, solved by CG with AMG or by MUMPS (Method =
