@@ -144,9 +144,13 @@ namespace
         std::cerr << "\nPolyFrac stopped: " << why << std::endl;
         return 1;
       }
-    std::cerr << "\nPolyFrac stopped on rank "
-              << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of "
-              << n_ranks << ": " << why << std::endl;
+    // One write per rank: std::cerr is unbuffered, and the pieces of a
+    // chain of << from two ranks would interleave on the terminal.
+    std::ostringstream message;
+    message << "\nPolyFrac stopped on rank "
+            << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of "
+            << n_ranks << ": " << why << '\n';
+    std::cerr << message.str() << std::flush;
     MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
   }
