@@ -21,26 +21,57 @@ namespace PolyFrac
 
 
 
+  namespace
+  {
+    /** Throws, naming the entry of @p expression, if @p result, the value
+     * of @p component at @p p, is not finite. */
+    template <int dim>
+    void
+    check_finite(const Expression<dim> &expression,
+                 const Point<dim>      &p,
+                 const unsigned int     component,
+                 const double           result)
+    {
+      if (std::isfinite(result))
+        return;
+      std::ostringstream message;
+      message << "Entry <" << expression.entry
+              << "> is not finite at the point (" << p << "): <"
+              << expression.get_expressions()[component] << "> gives "
+              << (std::isnan(result) ? "NaN" :
+                  result > 0         ? "inf" :
+                                       "-inf")
+              << ". Fix the expression so that it is finite on the whole "
+                 "domain (a division by zero, or the root or logarithm of "
+                 "a negative number?).";
+      AssertThrow(false, ExcMessage(message.str()));
+    }
+  } // namespace
+
+
+
   template <int dim>
   double
   Expression<dim>::value(const Point<dim>  &p,
                          const unsigned int component) const
   {
     const double result = FunctionParser<dim>::value(p, component);
-    if (!std::isfinite(result))
-      {
-        std::ostringstream message;
-        message << "Entry <" << entry << "> is not finite at the point (" << p
-                << "): <" << this->get_expressions()[component] << "> gives "
-                << (std::isnan(result) ? "NaN" :
-                    result > 0         ? "inf" :
-                                         "-inf")
-                << ". Fix the expression so that it is finite on the whole "
-                   "domain (a division by zero, or the root or logarithm of "
-                   "a negative number?).";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
+    check_finite(*this, p, component, result);
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Expression<dim>::vector_value(const Point<dim> &p,
+                                Vector<double>   &values) const
+  {
+    AssertDimension(values.size(), this->n_components);
+    ArrayView<double> view(values.begin(), values.size());
+    this->do_all_values(p, this->get_time(), view);
+    for (unsigned int c = 0; c < values.size(); ++c)
+      check_finite(*this, p, c, values[c]);
   }
 
 

@@ -14,8 +14,8 @@ namespace PolyFrac
 
   /**
    * The FunctionParser of a parameter entry that refuses to return a value
-   * that is not finite: value() (and through it vector_value() and the
-   * finite-difference gradients) throws an ExcMessage naming the entry, the
+   * that is not finite: value() and vector_value() (and through it the
+   * finite-difference gradients) throw an ExcMessage naming the entry, the
    * expression, the component and the point where it evaluates to inf or
    * NaN (a division by zero, the root or logarithm of a negative number).
    * Data that are not finite would otherwise run through the solvers and
@@ -32,6 +32,17 @@ namespace PolyFrac
     /** The value of @p component at @p p; throws if it is not finite. */
     double
     value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    /**
+     * All components at @p p in one evaluation of the parsers; throws if one
+     * is not finite. Function::vector_value() would call value() once per
+     * component, and each call looks up the parser data of its thread
+     * (a lock): the finite-difference gradients of AutoDerivativeFunction
+     * make 2 dim of these per point, the error integrals millions of them
+     * (benchmarks/README.md, "Evaluating the expressions").
+     */
+    void
+    vector_value(const Point<dim> &p, Vector<double> &values) const override;
 
     /** The entry this expression comes from, e.g. "Fractures/Pressure". */
     const std::string entry;
