@@ -769,9 +769,12 @@ namespace PolyFrac
                       "direct",
                       Patterns::Selection("direct|AMG"),
                       "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
-                      "(smoothed aggregation with the rigid-body modes for "
-                      "elasticity; plain aggregation with the translations "
-                      "for the condensed contact steps, CG or GMRES).");
+                      "(smoothed aggregation with the rigid-body modes) for "
+                      "elasticity, and for the symmetric condensed contact "
+                      "steps together with an exact solve on the fracture "
+                      "faces' unknowns (one AMG per level); GMRES with plain "
+                      "aggregation and the translations for the condensed "
+                      "Coulomb slip steps.");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0),

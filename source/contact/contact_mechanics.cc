@@ -833,6 +833,7 @@ namespace PolyFrac
             << times.n_amg_setups << " AMG set-ups, " << times.n_iterations
             << " Krylov iterations); wall: reduced operators "
             << times.reduced_operator << " s, AMG set-ups " << times.amg_setup
+            << " s, band factorisations " << times.band_factorization
             << " s, Krylov " << times.krylov << " s, the rest " << times.other
             << " s" << std::endl;
       }

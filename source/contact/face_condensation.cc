@@ -9,6 +9,7 @@
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/contact/face_condensation.h>
 #include <polyfrac/physics/amg_solver.h>
+#include <polyfrac/physics/fracture_band_preconditioner.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <malloc.h>
@@ -66,7 +67,22 @@ namespace PolyFrac
     // DynamicSparsityPattern after (benchmarks/README.md, "Memory budget").
     malloc_trim(0);
     make_reduced_pattern();
+    band = fracture_band();
     malloc_trim(0);
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  FaceCondensation<dim>::fracture_band() const
+  {
+    std::vector<types::global_dof_index> band;
+    for (const auto &stencil : stencils)
+      band.insert(band.end(), stencil.begin(), stencil.end());
+    std::sort(band.begin(), band.end());
+    band.erase(std::unique(band.begin(), band.end()), band.end());
+    return band;
   }
 
 
@@ -679,8 +695,8 @@ namespace PolyFrac
     Assert(condensable(linearisation), ExcInternalError());
     const types::global_dof_index n_u = dofs.n_displacement_dofs();
     const Timer                   step_timer;
-    const double                  timed_before =
-      times.reduced_operator + times.amg_setup + times.krylov;
+    const double timed_before = times.reduced_operator + times.amg_setup +
+                                times.band_factorization + times.krylov;
 
     std::vector<FaceLinearisation<dim>> faces;
     for (const auto &face : linearisation)
@@ -692,15 +708,24 @@ namespace PolyFrac
     Vector<double> offset;
     make_elimination(faces, rows, offset);
 
-    // The AMG is built anew only when some face's rows change kind (a
-    // state change); between, the operator changes only through the slip
-    // directions, and the AMG of the last new structure (and the operator
-    // it was built on, which ML keeps using) preconditions it. An AMG that
-    // will be replaced is freed, with its operator, before the new operator
-    // is built, and the heap pages freed since the last step are handed
-    // back (see the constructor).
+    // The AMG is the lean one (AMGHierarchy::lean). A symmetric step is
+    // preconditioned by it and the fracture band, and the AMG of the
+    // level's first symmetric step serves all the later ones: the states
+    // change the operator on the band only. For GMRES the AMG is built
+    // anew when some face's rows change kind (a state change); between,
+    // the operator changes only through the slip directions, and the AMG
+    // of the last new structure preconditions it. ML keeps using the
+    // operator it was built on (amg_matrix). An AMG that will be replaced
+    // is freed, with its operator, before the new operator is built, and
+    // the heap pages freed since the last step are handed back (see the
+    // constructor).
+    const bool symmetric =
+      std::none_of(rows.begin(), rows.end(), [](const LocalRows &face) {
+        return face.coupled;
+      });
     const std::vector<bool> structure = row_structure(rows);
-    const bool              new_amg   = !amg || structure != amg_structure;
+    const bool              new_amg   = !amg || symmetric != amg_symmetric ||
+                         (!symmetric && structure != amg_structure);
     if (new_amg)
       {
         amg.reset();
@@ -722,6 +747,7 @@ namespace PolyFrac
                      vertices,
                      solver.smoother_sweeps,
                      AMGHierarchy::lean);
+      amg_symmetric = symmetric;
       amg_structure = structure;
       malloc_trim(0); // ML's set-up products
       times.amg_setup += amg_timer.wall_time();
@@ -732,12 +758,8 @@ namespace PolyFrac
 
     // After the AMG set-up, whose transient sets the peak memory.
     const Vector<double> rhs = condensed_rhs(faces, rows, residual, offset);
-    const bool           symmetric =
-      std::none_of(rows.begin(), rows.end(), [](const LocalRows &face) {
-        return face.coupled;
-      });
-    Vector<double> y(n_u);
-    KrylovSolve    krylov{symmetric ? "CG" : "GMRES", 0, true};
+    Vector<double>       y(n_u);
+    KrylovSolve          krylov{symmetric ? "CG" : "GMRES", 0, true};
     if (new_amg)
       std::tie(krylov.iterations, krylov.converged) =
         krylov_solve(symmetric, *amg_matrix, rhs, solver, enough, y);
@@ -765,9 +787,9 @@ namespace PolyFrac
     ++times.n_steps;
     times.n_iterations += krylov.iterations;
     const auto count_the_rest = [&]() {
-      times.other +=
-        step_timer.wall_time() - (times.reduced_operator + times.amg_setup +
-                                  times.krylov - timed_before);
+      times.other += step_timer.wall_time() -
+                     (times.reduced_operator + times.amg_setup +
+                      times.band_factorization + times.krylov - timed_before);
     };
     if (!krylov.converged)
       {
@@ -849,22 +871,33 @@ namespace PolyFrac
     const double                          enough,
     Vector<double>                       &y)
   {
+    std::unique_ptr<FractureBandPreconditioner> band_preconditioner;
+    if (symmetric)
+      {
+        const Timer factorization_timer;
+        band_preconditioner =
+          std::make_unique<FractureBandPreconditioner>(matrix, band, *amg);
+        times.band_factorization += factorization_timer.wall_time();
+      }
     const Timer                   timer;
     std::pair<unsigned int, bool> result;
+    const auto                    solve = [&](auto &x, const auto &b) {
+      result = symmetric ?
+                                    solve_krylov(
+                   true, matrix, x, b, *band_preconditioner, limits, enough) :
+                                    solve_krylov(false, matrix, x, b, *amg, limits, enough);
+    };
     if (!dofs.is_distributed())
       {
-        y      = 0;
-        result = solve_krylov(symmetric, matrix, y, rhs, *amg, limits, enough);
+        y = 0;
+        solve(y, rhs);
       }
     else
       // On this rank's rows, then gathered on every rank.
-      y = solve_on_owned_rows(
-        dofs.locally_owned_dofs(),
-        dofs.get_communicator(),
-        rhs,
-        [&](auto &x, const auto &b) {
-          result = solve_krylov(symmetric, matrix, x, b, *amg, limits, enough);
-        });
+      y = solve_on_owned_rows(dofs.locally_owned_dofs(),
+                              dofs.get_communicator(),
+                              rhs,
+                              solve);
     times.krylov += timer.wall_time();
     return result;
   }

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <polyfrac/physics/amg_solver.h>
+#include <polyfrac/physics/fracture_band_preconditioner.h>
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
@@ -135,28 +136,28 @@ namespace PolyFrac
 
 
 
-  template <typename VectorType>
+  template <typename VectorType, typename PreconditionerType>
   std::pair<unsigned int, bool>
-  solve_krylov(const bool                               symmetric,
-               const TrilinosWrappers::SparseMatrix    &matrix,
-               VectorType                              &x,
-               const VectorType                        &rhs,
-               const TrilinosWrappers::PreconditionAMG &amg,
-               const Parameters::SolverData            &solver,
-               const double                             enough)
+  solve_krylov(const bool                            symmetric,
+               const TrilinosWrappers::SparseMatrix &matrix,
+               VectorType                           &x,
+               const VectorType                     &rhs,
+               const PreconditionerType             &preconditioner,
+               const Parameters::SolverData         &solver,
+               const double                          enough)
   {
     SolverControl control(solver.max_iterations,
                           std::max(solver.tolerance * rhs.l2_norm(), enough));
     try
       {
         if (symmetric)
-          SolverCG<VectorType>(control).solve(matrix, x, rhs, amg);
+          SolverCG<VectorType>(control).solve(matrix, x, rhs, preconditioner);
         else
           SolverGMRES<VectorType>(
             control,
             typename SolverGMRES<VectorType>::AdditionalData(gmres_restart,
                                                              true))
-            .solve(matrix, x, rhs, amg);
+            .solve(matrix, x, rhs, preconditioner);
       }
     catch (const SolverControl::NoConvergence &)
       {
@@ -243,9 +244,25 @@ namespace PolyFrac
   template std::pair<unsigned int, bool>
   solve_krylov(const bool,
                const TrilinosWrappers::SparseMatrix &,
+               Vector<double> &,
+               const Vector<double> &,
+               const FractureBandPreconditioner &,
+               const Parameters::SolverData &,
+               const double);
+  template std::pair<unsigned int, bool>
+  solve_krylov(const bool,
+               const TrilinosWrappers::SparseMatrix &,
                TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::PreconditionAMG &,
+               const Parameters::SolverData &,
+               const double);
+  template std::pair<unsigned int, bool>
+  solve_krylov(const bool,
+               const TrilinosWrappers::SparseMatrix &,
+               TrilinosWrappers::MPI::Vector &,
+               const TrilinosWrappers::MPI::Vector &,
+               const FractureBandPreconditioner &,
                const Parameters::SolverData &,
                const double);
   template unsigned int

@@ -53,10 +53,12 @@ namespace PolyFrac
    *
    * symmetric positive definite for frictionless and Tresca contact: no
    * multiplier unknowns, one row per displacement dof (eliminated dofs
-   * and Dirichlet dofs keep a decoupled unit row), so it is solved by CG
-   * with the same AMG as elasticity. The kinematic multipliers are then
-   * recovered from the bubble rows of the momentum equation, |σ| w_b dλ =
-   * −(R + A du)_b.
+   * and Dirichlet dofs keep a decoupled unit row), so it is solved by CG,
+   * preconditioned by a lean AMG (AMGHierarchy::lean) and an exact solve
+   * on the fracture band (FractureBandPreconditioner): the AMG is built
+   * for the first step and kept, the band is factorised at every step. The
+   * kinematic multipliers are then recovered from the bubble rows of the
+   * momentum equation, |σ| w_b dλ = −(R + A du)_b.
    *
    * A Coulomb face that slips in contact has a kinematic normal row and
    * traction rows that also see the normal reaction (M_λ[τ][n] ≠ 0, λ_τ =
@@ -69,8 +71,8 @@ namespace PolyFrac
    * the reduced operator (G: the traction jump components of Z), a sparse
    * coupling of the face's jump dofs to the dofs of its two cells that
    * makes the operator non-symmetric. That operator is solved by GMRES
-   * preconditioned with the same AMG; the caller falls back to the saddle
-   * point when GMRES does not converge.
+   * preconditioned with the lean AMG, built again at every state change; the
+   * caller falls back to the saddle point when GMRES does not converge.
    */
   template <int dim>
   class FaceCondensation
@@ -123,6 +125,8 @@ namespace PolyFrac
       double reduced_operator = 0;
       /** ML's set-ups. */
       double amg_setup = 0;
+      /** The factorisations of the fracture band (CG steps). */
+      double band_factorization = 0;
       /** The Krylov solves. */
       double krylov = 0;
       /** The rest: the elimination Z, the right-hand sides, the recovery
@@ -157,9 +161,9 @@ namespace PolyFrac
      * how it was solved. The Krylov solver stops at `Linear
      * solver/Tolerance` relative to its right-hand side or, earlier, at the
      * residual @p enough (an inexact Newton step). The AMG is that of the
-     * last state change while the faces keep their states; if it has not
-     * reached the tolerance in 100 iterations, it is built again for this
-     * operator and the solve starts over.
+     * first step (CG, with the fracture band) or of the last state change
+     * (GMRES); if it has not reached the tolerance in 100 iterations, it is
+     * built again for this operator and the solve starts over.
      */
     KrylovSolve
     solve(const std::vector<FaceLinearisation<dim>> &linearisation,
@@ -249,8 +253,9 @@ namespace PolyFrac
                        Vector<double>               &step) const;
 
     /**
-     * Solves @p matrix @p y = @p rhs from zero with the current #amg, by CG
-     * or GMRES (solve_krylov(), with the limits of @p limits and the
+     * Solves @p matrix @p y = @p rhs from zero by CG, preconditioned by
+     * the current #amg and the fracture band (@p symmetric), or by GMRES
+     * and the #amg (solve_krylov(), with the limits of @p limits and the
      * residual @p enough). Distributed, the solve runs on the ranks' rows
      * and @p y is then gathered whole on every rank. Returns the iterations
      * and whether the solver converged.
@@ -346,12 +351,27 @@ namespace PolyFrac
     row_structure(const std::vector<LocalRows> &rows);
 
     /**
-     * The AMG of the last reduced operator with a new row structure, that
-     * operator (ML keeps a reference to it) and its row structure.
+     * The AMG, the reduced operator it was built for (ML keeps a
+     * reference to it), whether that operator was symmetric, and its row
+     * structure.
      */
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    bool                                               amg_symmetric = false;
     std::vector<bool>                                  amg_structure;
+
+    /**
+     * The fracture band of FractureBandPreconditioner: the free dofs of
+     * the jumps, i.e. the node sides of the fracture faces, and the
+     * bubbles. (With the node sides of their cells too, the band saves a
+     * third of the CG iterations but costs more to factorise than it
+     * saves: benchmarks/README.md, "The fracture band".)
+     */
+    std::vector<types::global_dof_index> band;
+
+    /** The fracture band: the union of the face stencils, sorted. */
+    std::vector<types::global_dof_index>
+    fracture_band() const;
 
     /** See phase_times(). */
     PhaseTimes times;

@@ -57,23 +57,24 @@ namespace PolyFrac
   /**
    * Solves @p matrix @p x = @p rhs by CG (@p symmetric) or restarted GMRES,
    * right-preconditioned (so that the tolerance bounds the residual of the
-   * system itself, like CG's) with @p amg, which may have been built for
-   * another, nearby matrix. Stops at `Linear solver/Tolerance` relative to
+   * system itself, like CG's) with @p preconditioner: an AMG, which may
+   * have been built for another, nearby matrix, or a
+   * FractureBandPreconditioner. Stops at `Linear solver/Tolerance` relative to
    * |rhs|, or at the residual @p enough if that is larger; returns the
    * number of iterations and whether it got there within `Linear
    * solver/Maximum iterations` (the caller decides what to do otherwise).
    * VectorType: Vector<double>, or TrilinosWrappers::MPI::Vector on the
    * row map of a distributed @p matrix.
    */
-  template <typename VectorType>
+  template <typename VectorType, typename PreconditionerType>
   std::pair<unsigned int, bool>
-  solve_krylov(const bool                               symmetric,
-               const TrilinosWrappers::SparseMatrix    &matrix,
-               VectorType                              &x,
-               const VectorType                        &rhs,
-               const TrilinosWrappers::PreconditionAMG &amg,
-               const Parameters::SolverData            &solver,
-               const double                             enough = 0.);
+  solve_krylov(const bool                            symmetric,
+               const TrilinosWrappers::SparseMatrix &matrix,
+               VectorType                           &x,
+               const VectorType                     &rhs,
+               const PreconditionerType             &preconditioner,
+               const Parameters::SolverData         &solver,
+               const double                          enough = 0.);
 
   /**
    * Solves @p matrix @p x = @p rhs by MUMPS (Trilinos' Amesos) on the ranks

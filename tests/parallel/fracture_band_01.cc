@@ -1,0 +1,162 @@
+// FractureBandPreconditioner, on one rank and on two: for a 5-point
+// Laplacian K on a 48 x 48 grid, stiff along one grid column, the band S
+// (which the two ranks' rows split), and ML's AMG as M, the preconditioner
+//   B = P_S + (I − P_S K) M (I − K P_S)
+// - is exact on the band: B K x = x for x supported on S, to 1e-10;
+// - is symmetric: |u·Bv − v·Bu| <= 1e-10 |u| |Bv|;
+// - is positive: u·Bu > 0;
+// - preconditions CG to 1e-10 within 100 iterations.
+// The test stops (non-zero exit status) if any of these fails.
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <polyfrac/physics/fracture_band_preconditioner.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace dealii;
+using namespace PolyFrac;
+
+namespace
+{
+  constexpr unsigned int n = 48;
+
+  /** A reproducible vector: entry k is f(k) on the rows of this rank. */
+  template <typename F>
+  TrilinosWrappers::MPI::Vector
+  make_vector(const IndexSet &owned, const F &f)
+  {
+    TrilinosWrappers::MPI::Vector v(owned, MPI_COMM_WORLD);
+    for (const auto k : owned)
+      v(k) = f(k);
+    v.compress(VectorOperation::insert);
+    return v;
+  }
+
+  unsigned int
+  cg_iterations(const TrilinosWrappers::SparseMatrix &K,
+                const TrilinosWrappers::MPI::Vector  &b,
+                const auto                           &preconditioner)
+  {
+    SolverControl                 control(100, 1e-10 * b.l2_norm());
+    TrilinosWrappers::MPI::Vector x(b);
+    x = 0;
+    SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(K,
+                                                           x,
+                                                           b,
+                                                           preconditioner);
+    return control.last_step();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const unsigned int rank    = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+
+  // Grid point (i, j) is dof i + n j; the ranks own contiguous halves.
+  IndexSet owned(n * n);
+  owned.add_range(rank * n * n / n_ranks, (rank + 1) * n * n / n_ranks);
+  TrilinosWrappers::SparsityPattern pattern(owned, MPI_COMM_WORLD);
+  const auto                        neighbours = [](const unsigned int k) {
+    std::vector<unsigned int> result{k};
+    const unsigned int        i = k % n, j = k / n;
+    if (i > 0)
+      result.push_back(k - 1);
+    if (i + 1 < n)
+      result.push_back(k + 1);
+    if (j > 0)
+      result.push_back(k - n);
+    if (j + 1 < n)
+      result.push_back(k + n);
+    return result;
+  };
+  for (const auto k : owned)
+    for (const auto l : neighbours(k))
+      pattern.add(k, l);
+  pattern.compress();
+  // A weighted graph Laplacian (Dirichlet outside the grid): the edges
+  // along the band are 1000 times stiffer, like the couplings the
+  // elimination of the bubbles puts along a fracture.
+  const auto weight = [](const unsigned int k, const unsigned int l) {
+    return (k % n == n / 2 && l % n == n / 2) ? 1000. : 1.;
+  };
+  TrilinosWrappers::SparseMatrix K(pattern);
+  for (const auto k : owned)
+    {
+      double diagonal = 4. - neighbours(k).size() + 1.;
+      for (const auto l : neighbours(k))
+        if (l != k)
+          {
+            K.set(k, l, -weight(k, l));
+            diagonal += weight(k, l);
+          }
+      K.set(k, k, diagonal);
+    }
+  K.compress(VectorOperation::insert);
+
+  std::vector<types::global_dof_index> band;
+  for (unsigned int j = 0; j < n; ++j)
+    band.push_back(n / 2 + n * j);
+
+  TrilinosWrappers::PreconditionAMG                 amg;
+  TrilinosWrappers::PreconditionAMG::AdditionalData data;
+  data.elliptic = true;
+  amg.initialize(K, data);
+  const FractureBandPreconditioner B(K, band, amg);
+
+  bool holds = true;
+
+  // Exact on the band.
+  const auto on_band = make_vector(owned, [](const unsigned int k) {
+    return k % n == n / 2 ? std::sin(1. + 0.7 * k) : 0.;
+  });
+  TrilinosWrappers::MPI::Vector Kx(on_band), BKx(on_band);
+  K.vmult(Kx, on_band);
+  B.vmult(BKx, Kx);
+  BKx -= on_band;
+  const double band_error = BKx.l2_norm() / on_band.l2_norm();
+  holds                   = holds && band_error < 1e-10;
+
+  // Symmetric and positive.
+  const auto u =
+    make_vector(owned, [](const unsigned int k) { return std::cos(0.3 * k); });
+  const auto v = make_vector(owned, [](const unsigned int k) {
+    return std::sin(2. + 1.1 * k);
+  });
+  TrilinosWrappers::MPI::Vector Bu(u), Bv(v);
+  B.vmult(Bu, u);
+  B.vmult(Bv, v);
+  const double asymmetry =
+    std::abs(u * Bv - v * Bu) / (u.l2_norm() * Bv.l2_norm());
+  const bool positive = u * Bu > 0;
+  holds               = holds && asymmetry < 1e-10 && positive;
+
+  // CG converges with it (SolverCG throws, and the test stops, if not).
+  const unsigned int iterations = cg_iterations(K, v, B);
+
+  if (rank == 0)
+    {
+      std::cout << "ranks: " << n_ranks << std::endl
+                << "B K x = x on the band: "
+                << (band_error < 1e-10 ? "yes" : "no") << std::endl
+                << "symmetric: " << (asymmetry < 1e-10 ? "yes" : "no")
+                << std::endl
+                << "positive: " << (positive ? "yes" : "no") << std::endl
+                << "CG converges: yes" << std::endl;
+      if (!holds)
+        std::cerr << "band error " << band_error << ", asymmetry " << asymmetry
+                  << ", CG iterations " << iterations << std::endl;
+    }
+  return holds ? 0 : 1;
+}
