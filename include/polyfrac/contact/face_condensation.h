@@ -363,9 +363,10 @@ namespace PolyFrac
     /**
      * The fracture band of FractureBandPreconditioner: the free dofs of
      * the jumps, i.e. the node sides of the fracture faces, and the
-     * bubbles. (With the node sides of their cells too, the band saves a
-     * third of the CG iterations but costs more to factorise than it
-     * saves: benchmarks/README.md, "The fracture band".)
+     * bubbles. (With the node sides of their cells too, the band saves
+     * CG iterations, a sixth with the lean AMG at 32³, but costs more to
+     * factorise than it saves: benchmarks/README.md, "The fracture
+     * band".)
      */
     std::vector<types::global_dof_index> band;
 
