@@ -1033,7 +1033,8 @@ main(int argc, char **argv)
  * Possibilities for extensions
  * ----------------------------
  *
- * Run the 3D scene, `./step-2 prm/b2-3d-tresca.prm`: the checks are the
+ * Run the 3D scene, `./step-2 prm/b2-3d-tresca.prm --set "Mesh/Subdivisions=2,
+ * 2, 2"` (the scene ships 6^3 to 48^3): the checks are the
  * same (in the table, λ_τ and [u]_τ are then the τ_1 components). Open
  * the fracture: a body force or boundary data that pull the sides apart
  * on part of Γ exercise the open state, which this scene only visits in

@@ -485,30 +485,35 @@ namespace PolyFrac
     // graph is reference counted): only its values are new.
     matrix.reinit(reduced_pattern);
 
-    // D A D, a row at a time (A lives on the same graph), on this rank's
-    // rows; the corrections of this rank's faces (whose bubble rows of A
-    // are this rank's).
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    const Epetra_CrsMatrix              &A = stiffness.trilinos_matrix();
+    // D A D on this rank's rows. A lives on the same graph, so a row of A
+    // and the same row of the matrix list the same columns in the same
+    // order: the values are copied entry by entry, without looking up a
+    // single index (deal.II 9.4 gives only a const view of the Epetra
+    // matrix; its values are written in place, its graph is untouched).
+    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
+    auto &reduced = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+    const auto is_free = [&](const types::global_dof_index x) {
+      return x < first_bubble && free_nodal[x];
+    };
+    std::vector<bool> free_column(A.NumMyCols());
+    for (int j = 0; j < A.NumMyCols(); ++j)
+      free_column[j] = is_free(A.GCID(j));
     for (int local = 0; local < A.NumMyRows(); ++local)
-      if (const types::global_dof_index r = A.GRID(local);
-          r < first_bubble && free_nodal[r])
+      if (is_free(A.GRID(local)))
         {
-          columns.clear();
-          values.clear();
-          const auto row = stiffness_row(stiffness, r);
-          for (int e = 0; e < row.length; ++e)
-            {
-              const types::global_dof_index column = row.column(e);
-              if (column < first_bubble && free_nodal[column])
-                {
-                  columns.push_back(column);
-                  values.push_back(row.values[e]);
-                }
-            }
-          matrix.add(
-            r, columns.size(), columns.data(), values.data(), false, false);
+          int     length, reduced_length;
+          double *A_values, *reduced_values;
+          int    *columns, *reduced_columns;
+          A.ExtractMyRowView(local, length, A_values, columns);
+          reduced.ExtractMyRowView(local,
+                                   reduced_length,
+                                   reduced_values,
+                                   reduced_columns);
+          AssertThrow(reduced_length == length && reduced_columns == columns,
+                      ExcInternalError());
+          for (int e = 0; e < length; ++e)
+            if (free_column[columns[e]])
+              reduced_values[e] = A_values[e];
         }
 
     // D A W + (D A W)^T + W^T A W, face by face: K = A W restricted to the
