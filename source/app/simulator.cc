@@ -332,6 +332,7 @@ namespace PolyFrac
                        communicator);
     const std::optional<unsigned int> newton_iterations =
       run_steps(level, *model, output, timer, out);
+    model->release_solver_memory();
     coarser = model->level_start();
 
     timer.enter_subsection("postprocessing");

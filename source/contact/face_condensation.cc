@@ -828,6 +828,17 @@ namespace PolyFrac
 
   template <int dim>
   void
+  FaceCondensation<dim>::release_amg()
+  {
+    amg.reset();
+    amg_matrix.reset();
+    malloc_trim(0);
+  }
+
+
+
+  template <int dim>
+  void
   FaceCondensation<dim>::recover_multiplier(const FaceLinearisation<dim> &face,
                                             const LocalRows              &rows,
                                             const unsigned int            i,

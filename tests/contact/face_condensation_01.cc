@@ -5,7 +5,8 @@
 // (Tresca: in 3D the slip direction gives E ≠ 0), frictionless contact; on
 // two crossing fractures in 2D and 3D. Then again with Coulomb faces
 // slipping in contact among them (λ_τ = F λ_n: the reduced operator is
-// non-symmetric and GMRES solves it).
+// non-symmetric and GMRES solves it). Each step is solved again after
+// release_amg(), which must give the same step.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -174,6 +175,17 @@ check(const unsigned int subdivisions, const unsigned int n_states)
   const bool condensable = FaceCondensation<dim>::condensable(faces);
   const auto krylov = condensation.solve(faces, residual, 0., condensed_step);
 
+  // With the AMG freed (as after a level's last step), the next solve
+  // builds it again and gives the same step.
+  const unsigned int n_setups = condensation.phase_times().n_amg_setups;
+  condensation.release_amg();
+  Vector<double> repeated_step;
+  condensation.solve(faces, residual, 0., repeated_step);
+  repeated_step -= condensed_step;
+  AssertThrow(condensation.phase_times().n_amg_setups == n_setups + 1,
+              ExcMessage("The solve after release_amg() did not build the "
+                         "AMG again."));
+
   double u_error = 0, u_norm = 0, lambda_error = 0, lambda_norm = 0;
   for (types::global_dof_index k = 0; k < residual.size(); ++k)
     {
@@ -207,6 +219,11 @@ check(const unsigned int subdivisions, const unsigned int n_states)
             << Testing::expect_round_off("condensed multiplier step",
                                          lambda_error / lambda_norm,
                                          1e-9)
+            << std::endl
+            << "  the step again after release_amg(), difference: "
+            << Testing::expect_round_off("the step after release_amg()",
+                                         repeated_step.linfty_norm() /
+                                           condensed_step.linfty_norm())
             << std::endl;
 }
 

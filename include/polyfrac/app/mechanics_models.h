@@ -114,6 +114,13 @@ namespace PolyFrac
     void
     print_step_summary(std::ostream &out) const override;
 
+    /** Frees the AMG of the condensed Newton steps and its operator. */
+    void
+    release_solver_memory() override
+    {
+      contact.release_solver_memory();
+    }
+
     types::global_dof_index
     n_unknowns() const override
     {

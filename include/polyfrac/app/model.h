@@ -105,6 +105,15 @@ namespace PolyFrac
     virtual void
     print_step_summary(std::ostream &out) const;
 
+    /**
+     * Frees what only the steps need (preconditioners kept from one step
+     * to the next); called once the level's last step is done, before its
+     * errors and output, so that these do not add to the solver's memory.
+     * The default frees nothing.
+     */
+    virtual void
+    release_solver_memory();
+
     /** Unknowns of the model's linear systems. */
     virtual types::global_dof_index
     n_unknowns() const = 0;
@@ -153,6 +162,13 @@ namespace PolyFrac
   template <int dim>
   inline void
   Model<dim>::print_step_summary(std::ostream &) const
+  {}
+
+
+
+  template <int dim>
+  inline void
+  Model<dim>::release_solver_memory()
   {}
 
 

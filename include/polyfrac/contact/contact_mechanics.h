@@ -131,6 +131,18 @@ namespace PolyFrac
     void
     set_loads(const double t, const Vector<double> &additional_load);
 
+    /**
+     * Frees what only the Newton steps need between one solve() and the
+     * next (the AMG of the condensed steps and its operator); solve()
+     * builds them again if called later.
+     */
+    void
+    release_solver_memory()
+    {
+      if (condensation)
+        condensation->release_amg();
+    }
+
     /** Total number of Newton iterations over the load steps. */
     unsigned int
     n_newton_iterations() const

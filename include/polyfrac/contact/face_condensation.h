@@ -171,6 +171,14 @@ namespace PolyFrac
           const double                               enough,
           Vector<double>                            &step);
 
+    /**
+     * Frees the AMG and the reduced operator it was built on (about as
+     * large as A), and hands the freed heap back to the system: for when
+     * no step of this operator follows. The next solve() builds a new AMG.
+     */
+    void
+    release_amg();
+
   private:
     /**
      * The local rows of a face: kinematic or traction; on the traction rows
