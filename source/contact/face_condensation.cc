@@ -761,13 +761,24 @@ namespace PolyFrac
     if (new_amg)
       build_amg();
 
-    // After the AMG set-up, whose transient sets the peak memory.
+    // After the AMG set-up, whose transient sets the peak memory. The band
+    // of a symmetric step is factorised once, for this step's operator.
+    const TrilinosWrappers::SparseMatrix &step_matrix =
+      new_amg ? *amg_matrix : *matrix;
+    std::unique_ptr<FractureBandPreconditioner> band_preconditioner;
+    if (symmetric)
+      {
+        const Timer factorization_timer;
+        band_preconditioner =
+          std::make_unique<FractureBandPreconditioner>(step_matrix, band, *amg);
+        times.band_factorization += factorization_timer.wall_time();
+      }
     const Vector<double> rhs = condensed_rhs(faces, rows, residual, offset);
     Vector<double>       y(n_u);
     KrylovSolve          krylov{symmetric ? "CG" : "GMRES", 0, true};
     if (new_amg)
-      std::tie(krylov.iterations, krylov.converged) =
-        krylov_solve(symmetric, *amg_matrix, rhs, solver, enough, y);
+      std::tie(krylov.iterations, krylov.converged) = krylov_solve(
+        band_preconditioner.get(), *amg_matrix, rhs, solver, enough, y);
     else
       {
         // A reused AMG gets at most reused_amg_iterations; if they do not
@@ -777,13 +788,15 @@ namespace PolyFrac
         Parameters::SolverData limited = solver;
         limited.max_iterations =
           std::min(solver.max_iterations, reused_amg_iterations);
-        std::tie(krylov.iterations, krylov.converged) =
-          krylov_solve(symmetric, *matrix, rhs, limited, enough, y);
+        std::tie(krylov.iterations, krylov.converged) = krylov_solve(
+          band_preconditioner.get(), *matrix, rhs, limited, enough, y);
         if (!krylov.converged && limited.max_iterations < solver.max_iterations)
           {
             build_amg();
-            const auto [more, converged] =
-              krylov_solve(symmetric, *amg_matrix, rhs, solver, enough, y);
+            if (band_preconditioner)
+              band_preconditioner->replace_amg(*amg);
+            const auto [more, converged] = krylov_solve(
+              band_preconditioner.get(), *amg_matrix, rhs, solver, enough, y);
             krylov.iterations += more;
             krylov.converged   = converged;
             krylov.amg_rebuilt = true;
@@ -880,25 +893,17 @@ namespace PolyFrac
   template <int dim>
   std::pair<unsigned int, bool>
   FaceCondensation<dim>::krylov_solve(
-    const bool                            symmetric,
+    const FractureBandPreconditioner     *band_preconditioner,
     const TrilinosWrappers::SparseMatrix &matrix,
     const Vector<double>                 &rhs,
     const Parameters::SolverData         &limits,
     const double                          enough,
     Vector<double>                       &y)
   {
-    std::unique_ptr<FractureBandPreconditioner> band_preconditioner;
-    if (symmetric)
-      {
-        const Timer factorization_timer;
-        band_preconditioner =
-          std::make_unique<FractureBandPreconditioner>(matrix, band, *amg);
-        times.band_factorization += factorization_timer.wall_time();
-      }
     const Timer                   timer;
     std::pair<unsigned int, bool> result;
     const auto                    solve = [&](auto &x, const auto &b) {
-      result = symmetric ?
+      result = band_preconditioner ?
                                     solve_krylov(
                    true, matrix, x, b, *band_preconditioner, limits, enough) :
                                     solve_krylov(false, matrix, x, b, *amg, limits, enough);

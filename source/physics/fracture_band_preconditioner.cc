@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector_memory.h>
 
 #include <polyfrac/physics/fracture_band_preconditioner.h>
 
@@ -46,9 +47,10 @@ namespace PolyFrac
     const TrilinosWrappers::SparseMatrix       &matrix,
     const std::vector<types::global_dof_index> &band,
     const TrilinosWrappers::PreconditionAMG    &amg)
-    : amg(amg)
+    : amg(&amg)
     , communicator(matrix.get_mpi_communicator())
     , band_vector(band.size())
+    , first_solution(band.size())
   {
     AssertThrow(std::is_sorted(band.begin(), band.end()), ExcInternalError());
     const Epetra_CrsMatrix &K             = matrix.trilinos_matrix();
@@ -159,6 +161,15 @@ namespace PolyFrac
 
 
 
+  void
+  FractureBandPreconditioner::replace_amg(
+    const TrilinosWrappers::PreconditionAMG &new_amg)
+  {
+    amg = &new_amg;
+  }
+
+
+
   FractureBandPreconditioner::~FractureBandPreconditioner()
   {
     cholmod_free_factor(&factor, &common);
@@ -199,7 +210,7 @@ namespace PolyFrac
   {
     if (band_vector.size() == 0)
       {
-        amg.vmult(dst, src);
+        amg->vmult(dst, src);
         return;
       }
     // x_S = K_SS^{-1} b_S; r = b − K x_S = b − C x_S.
@@ -208,18 +219,23 @@ namespace PolyFrac
     for (const auto &[i, p] : owned_band)
       band_vector(p) = b[i];
     solve_on_band();
-    const Vector<double> first(static_cast<const double *>(solution->x),
-                               static_cast<const double *>(solution->x) +
-                                 band_vector.size());
-    VectorType           residual(src);
-    double              *r = residual.begin();
+    std::copy(static_cast<const double *>(solution->x),
+              static_cast<const double *>(solution->x) + band_vector.size(),
+              first_solution.begin());
+    // A vector of src's size from deal.II's pool, not allocated anew at
+    // every application.
+    GrowingVectorMemory<VectorType>            memory;
+    typename VectorMemory<VectorType>::Pointer residual(memory);
+    residual->reinit(src, true);
+    *residual = src;
+    double *r = residual->begin();
     for (unsigned int k = 0; k < coupled_rows.size(); ++k)
       for (auto e = coupling.begin(k); e != coupling.end(k); ++e)
-        r[coupled_rows[k]] -= e->value() * first(e->column());
+        r[coupled_rows[k]] -= e->value() * first_solution(e->column());
 
     // y = M r, then the band again on the new residual: (r − K y)_S =
     // r_S − C^T y, summed over the ranks.
-    amg.vmult(dst, residual);
+    amg->vmult(dst, *residual);
     double *x   = dst.begin();
     band_vector = 0;
     for (const auto &[i, p] : owned_band)
@@ -230,7 +246,7 @@ namespace PolyFrac
     solve_on_band();
     const double *second = static_cast<const double *>(solution->x);
     for (const auto &[i, p] : owned_band)
-      x[i] += first(p) + second[p];
+      x[i] += first_solution(p) + second[p];
   }
 
 

@@ -26,6 +26,8 @@ namespace PolyFrac
 {
   using namespace dealii;
 
+  class FractureBandPreconditioner;
+
   /**
    * One semi-smooth Newton step of contact mechanics without the saddle
    * point: the multipliers are eliminated face by face, which the bubble
@@ -262,14 +264,14 @@ namespace PolyFrac
 
     /**
      * Solves @p matrix @p y = @p rhs from zero by CG, preconditioned by
-     * the current #amg and the fracture band (@p symmetric), or by GMRES
-     * and the #amg (solve_krylov(), with the limits of @p limits and the
-     * residual @p enough). Distributed, the solve runs on the ranks' rows
-     * and @p y is then gathered whole on every rank. Returns the iterations
-     * and whether the solver converged.
+     * @p band_preconditioner (the current #amg and the fracture band), or,
+     * if that is null, by GMRES and the #amg (solve_krylov(), with the
+     * limits of @p limits and the residual @p enough). Distributed, the solve
+     * runs on the ranks' rows and @p y is then gathered whole on every rank.
+     * Returns the iterations and whether the solver converged.
      */
     std::pair<unsigned int, bool>
-    krylov_solve(const bool                            symmetric,
+    krylov_solve(const FractureBandPreconditioner     *band_preconditioner,
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const Vector<double>                 &rhs,
                  const Parameters::SolverData         &limits,

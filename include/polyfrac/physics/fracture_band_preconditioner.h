@@ -61,6 +61,13 @@ namespace PolyFrac
     void
     vmult(VectorType &dst, const VectorType &src) const;
 
+    /**
+     * Replaces M by @p new_amg (which must outlive this object), keeping
+     * the factorisation: for an AMG built again for the same K.
+     */
+    void
+    replace_amg(const TrilinosWrappers::PreconditionAMG &new_amg);
+
     /** Frees CHOLMOD's objects. */
     ~FractureBandPreconditioner();
 
@@ -70,7 +77,7 @@ namespace PolyFrac
 
   private:
     /** M. */
-    const TrilinosWrappers::PreconditionAMG &amg;
+    const TrilinosWrappers::PreconditionAMG *amg;
 
     /** The communicator of K. */
     MPI_Comm communicator;
@@ -103,6 +110,9 @@ namespace PolyFrac
 
     /** A band-sized vector: this rank's part, then the sum over ranks. */
     mutable Vector<double> band_vector;
+
+    /** The first band solve of vmult(), x_S = K_SS^{-1} b_S. */
+    mutable Vector<double> first_solution;
 
     /** Factorises K_SS from its upper triangle @p entries (row, column,
      * value), all ranks' together. */
