@@ -8,8 +8,9 @@ many triangles; prints err_pressure, the largest pressure
 over p0, minus 1 (an overshoot means an oscillation), the smallest pressure,
 the number of steps along the column where p rises towards the drained top
 (0 for a monotone profile) and the sign changes of the second difference,
-without (delta = 0) and with the default pressure stabilisation (Flow/Pressure
-stabilisation, delta = 0.25).
+for the default (monolithic, normal face bubbles, no stabilisation) and the
+fixed-stress scheme without (delta = 0) and with its pressure stabilisation
+(Flow/Pressure stabilisation, delta = 0.25).
 
 usage: benchmarks/terzaghi_small_steps.py [POLYFRAC] [CELLS ...]
 (run from the repository root; needs python3-meshio)."""
@@ -27,25 +28,29 @@ c = 9.86e-14 / 1e-3 * (1.65e9 + 2 * 1.475e9)  # k/eta * K_v, 1/M = 0
 T_c = 1.0 / c
 p0 = 6e8
 print(f"T_c = h^2/c = {T_c:.4g} s")
-print("cells      delta  dt/T_c   dt [s]      err_pressure  max p/p0 - 1  "
+print("cells      scheme  dt/T_c   dt [s]      err_pressure  max p/p0 - 1  "
       "min p/p0  non-monotone steps of p  sign changes of d2p")
+schemes = {"bubbles": ("monolithic", 0.25), "fs 0": ("fixed-stress", 0),
+           "fs .25": ("fixed-stress", 0.25)}
 for cell_type, n, delta in [(t, n, d) for t in ["hypercube", "simplex"]
-                            for n in cells for d in [0, 0.25]]:
+                            for n in cells for d in schemes]:
+    scheme, stabilisation = schemes[delta]
     for f in [1e-1, 1e-2, 1e-3, 1e-4]:
         dt = f * T_c
-        out = f"/tmp/terzaghi-small-{cell_type}-{n}-{delta}-{f}"
+        out = f"/tmp/terzaghi-small-{cell_type}-{n}-{delta.replace(' ', '')}-{f}"
         run = subprocess.run([polyfrac, "prm/b4-terzaghi.prm",
                         "--set", f"Mesh/Subdivisions={max(n // 10, 1)}, {n}",
                         "--set", f"Mesh/Cell type={cell_type}",
                         "--set", f"Time/Time step={dt}",
                         "--set", f"Time/End time={dt}",
-                        "--set", f"Flow/Pressure stabilisation={delta}",
+                        "--set", f"Flow/Pressure stabilisation={stabilisation}",
+                        "--set", f"Nonlinear solver/Coupling scheme={scheme}",
                         "--set", "Output/Print timings=false",
                         "--set", f"Output/Output directory={out}"],
                        capture_output=True, text=True)
         if run.returncode != 0:
             reason = run.stdout.strip().splitlines()[-1][:160]
-            print(f"{cell_type[0]} {n:5d}  {delta:5.2f}  {f:6.0e}  {dt:10.3e}  "
+            print(f"{cell_type[0]} {n:5d}  {delta:>7}  {f:6.0e}  {dt:10.3e}  "
                   f"fails: {reason}")
             continue
         last = sorted(glob.glob(f"{out}/solution-level-0-*.vtu"))[-1]
@@ -68,6 +73,6 @@ for cell_type, n, delta in [(t, n, d) for t in ["hypercube", "simplex"]
         changes = int(np.sum(np.diff(np.sign(d2[np.abs(d2) > 1e-9 * p0])) != 0))
         series = open(f"{out}/time_series-level-0.csv").read().splitlines()[-1]
         err = float(series.split(",")[10])
-        print(f"{cell_type[0]} {n:5d}  {delta:5.2f}  {f:6.0e}  {dt:10.3e}  {err:12.4e}  "
+        print(f"{cell_type[0]} {n:5d}  {delta:>7}  {f:6.0e}  {dt:10.3e}  {err:12.4e}  "
               f"{p.max() / p0 - 1:12.3e}  {p.min() / p0:8.4f}  {rising:4d}  "
               f"{changes:4d}")

@@ -21,6 +21,29 @@ namespace PolyFrac
       return scale > 0 ? difference.linfty_norm() / scale :
                          difference.linfty_norm();
     }
+
+    /** The vector (@p a, @p b). */
+    Vector<double>
+    join(const Vector<double> &a, const Vector<double> &b)
+    {
+      Vector<double> result(a.size() + b.size());
+      std::copy(a.begin(), a.end(), result.begin());
+      std::copy(b.begin(), b.end(), result.begin() + a.size());
+      return result;
+    }
+
+    /** Splits @p x into @p a (its first @p n_a entries) and @p b. */
+    void
+    split(const Vector<double> &x,
+          const std::size_t     n_a,
+          Vector<double>       &a,
+          Vector<double>       &b)
+    {
+      a.reinit(n_a);
+      b.reinit(x.size() - n_a);
+      std::copy(x.begin(), x.begin() + n_a, a.begin());
+      std::copy(x.begin() + n_a, x.end(), b.begin());
+    }
   } // namespace
 
 
@@ -68,10 +91,32 @@ namespace PolyFrac
       state.multipliers.push_back(elasticity.in_situ_traction(i));
     if (prm.exact.analytic_solution != "none")
       use_analytic_solution();
-    initial_cell_pressure = flow.cell_pressures(pressure);
-    initial_volume        = coupling.volume_changes(state.displacement);
     elasticity.set_time(0);
     elasticity.assemble();
+    if (prm.flow.face_bubbles)
+      {
+        bubbles = std::make_unique<FaceBubbles<dim>>(*discretization.geometry,
+                                                     *discretization.network,
+                                                     *discretization.dofs,
+                                                     elasticity);
+        using Unknowns = typename BiotSystem<dim>::Unknowns;
+        system =
+          std::make_unique<BiotSystem<dim>>(prm,
+                                            *discretization.dofs,
+                                            pressure_dofs,
+                                            flow,
+                                            coupling,
+                                            elasticity,
+                                            *bubbles,
+                                            use_monolithic_scheme() ?
+                                              Unknowns::all :
+                                              Unknowns::bubbles_and_pressures);
+        energy_balance.use_face_bubbles(*bubbles);
+        state.face_bubbles.reinit(bubbles->n_bubbles());
+      }
+    monolithic            = use_monolithic_scheme();
+    initial_cell_pressure = flow.cell_pressures(pressure);
+    initial_volume        = coupling.volume_changes(state.displacement);
     if (discretization.network->n_fracture_faces() > 0)
       {
         contact =
@@ -81,6 +126,31 @@ namespace PolyFrac
                                                   *discretization.dofs);
         fracture_relaxation = fracture_compliance();
       }
+  }
+
+
+
+  template <int dim>
+  bool
+  PoromechanicsModel<dim>::use_monolithic_scheme() const
+  {
+    using Scheme        = Parameters::NonlinearData::CouplingScheme;
+    const Scheme scheme = prm.nonlinear.coupling_scheme;
+    std::string  obstacle;
+    if (!prm.flow.face_bubbles)
+      obstacle = "without Flow/Face bubbles";
+    else if (discretization.dofs->is_distributed())
+      obstacle = "on several ranks";
+    else if (discretization.network->n_fracture_faces() > 0)
+      obstacle = "with fractures";
+    AssertThrow(scheme != Scheme::monolithic || obstacle.empty(),
+                ExcMessage("In <" + prm.file_name +
+                           ">: Nonlinear solver/Coupling scheme = monolithic "
+                           "is not available " +
+                           obstacle +
+                           " yet: set it to fixed-stress or automatic."));
+    return scheme == Scheme::monolithic ||
+           (scheme == Scheme::automatic && obstacle.empty());
   }
 
 
@@ -285,14 +355,21 @@ namespace PolyFrac
   unsigned int
   PoromechanicsModel<dim>::solve_mechanics(const double                t,
                                            const Vector<double>       &p,
+                                           const Vector<double>       &s,
                                            const MechanicalState<dim> &start,
                                            const MechanicalState<dim> &guess,
                                            MechanicalState<dim>       &result)
   {
-    const Vector<double> load =
-      coupling.pressure_load(flow.cell_pressures(p),
-                             prm.flow.biot_coefficient,
-                             flow.fracture_pressures(p));
+    Vector<double> load = coupling.pressure_load(flow.cell_pressures(p),
+                                                 prm.flow.biot_coefficient,
+                                                 flow.fracture_pressures(p));
+    if (bubbles)
+      {
+        // −A_us s: the face bubbles' pull on the mechanics unknowns.
+        Vector<double> pull(load.size()), unused;
+        bubbles->vmult(Vector<double>(load.size()), s, pull, unused);
+        load -= pull;
+      }
     if (!contact)
       {
         elasticity.solve(result, load);
@@ -314,6 +391,8 @@ namespace PolyFrac
                                 const double  t_new,
                                 std::ostream &out)
   {
+    if (monolithic)
+      return monolithic_step(t_old, t_new, out);
     const double time_step = t_new - t_old;
     if (!contact)
       {
@@ -340,21 +419,35 @@ namespace PolyFrac
           {
             data =
               fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
-            data.increment_mobility = stabilisation;
-            Vector<double> image;
-            flow.solve_step(data, pressure, image);
+            Vector<double> image, s_image;
+            if (system)
+              system->solve_bubbles_and_pressures(
+                data, state, pressure, u_k, s_image, image);
+            else
+              {
+                data.increment_mobility = stabilisation;
+                flow.solve_step(data, pressure, image);
+              }
             // A change of the contact states changes a_σ, and with it the
             // map whose fixed point Anderson extrapolates: its history is
-            // then of another map.
+            // then of another map. The bubbles and the pressures of one
+            // flow solve are extrapolated together.
             if (u_k.contact.normal != previous_normal)
               anderson.clear();
-            previous_normal             = u_k.contact.normal;
-            const Vector<double> p_next = anderson.next(p_k, image);
+            previous_normal = u_k.contact.normal;
+            Vector<double> s_next, p_next;
+            split(anderson.next(join(u_k.face_bubbles, p_k),
+                                join(s_image, image)),
+                  s_image.size(),
+                  s_next,
+                  p_next);
             MechanicalState<dim> u_next;
             *report.newton_iterations +=
-              solve_mechanics(t_new, p_next, state, u_k, u_next);
+              solve_mechanics(t_new, p_next, s_next, state, u_k, u_next);
+            u_next.face_bubbles = s_next;
             increment =
-              relative_increment(u_next.displacement, u_k.displacement) +
+              relative_increment(join(u_next.displacement, s_next),
+                                 join(u_k.displacement, u_k.face_bubbles)) +
               relative_increment(image, p_k);
             report.coupling_increments.push_back(increment);
             u_k                        = u_next;
@@ -431,11 +524,36 @@ namespace PolyFrac
 
 
   template <int dim>
+  StepReport
+  PoromechanicsModel<dim>::monolithic_step(const double  t_old,
+                                           const double  t_new,
+                                           std::ostream &out)
+  {
+    const double         time_step = t_new - t_old;
+    MechanicalState<dim> u_new;
+    Vector<double>       p_new;
+    system->step(t_new, time_step, state, pressure, u_new, p_new);
+    StepReport report;
+    report.coupling_iterations = 1;
+    report.energy_residual =
+      energy_residual(flow.flow_step_data(t_new, time_step), u_new, p_new);
+    state    = u_new;
+    pressure = p_new;
+    out << "Step to t = " << t_new << ": monolithic, "
+        << system->n_factorisations() << " factorisation"
+        << (system->n_factorisations() > 1 ? "s" : "") << " so far"
+        << std::endl;
+    return report;
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   PoromechanicsModel<dim>::n_unknowns() const
   {
     return (contact ? contact->n_unknowns() : elasticity.n_unknowns()) +
-           pressure_dofs.n_dofs();
+           (bubbles ? bubbles->n_bubbles() : 0) + pressure_dofs.n_dofs();
   }
 
 
@@ -467,8 +585,14 @@ namespace PolyFrac
   PoromechanicsModel<dim>::matrix_output() const
   {
     const std::vector<double> p = flow.cell_pressures(pressure);
-    const std::vector<double> volume =
-      coupling.volume_changes(state.displacement);
+    std::vector<double> volume  = coupling.volume_changes(state.displacement);
+    if (bubbles)
+      {
+        const std::vector<double> bubble_volume =
+          bubbles->volume_changes(state.face_bubbles);
+        for (unsigned int c = 0; c < volume.size(); ++c)
+          volume[c] += bubble_volume[c];
+      }
     std::vector<double> porosity(p.size());
     for (unsigned int c = 0; c < p.size(); ++c)
       porosity[c] =

@@ -654,15 +654,26 @@ namespace PolyFrac
                       Patterns::Double(),
                       "Floor > 0 (m) of d_f in the cubic law C_f = d_f^3/12, "
                       "so that a closed fracture still conducts.");
+    prm.declare_entry(
+      "Face bubbles",
+      "true",
+      Patterns::Bool(),
+      "Model = poromechanics: one normal bubble per interior face enriches the "
+      "nodal displacement, which makes it an inf-sup stable pair with the cell "
+      "pressures (doc/scheme.md §10): no pressure oscillations in the "
+      "undrained limit and nothing added to the physics. false: the nodal "
+      "pair alone (unstable at small time steps; needed on several ranks, "
+      "where the bubbles are not yet available).");
     prm.declare_entry("Pressure stabilisation",
-                      "0.25",
+                      "0",
                       Patterns::Double(),
-                      "delta >= 0 (poromechanics): the pressure increment "
-                      "diffuses with the extra mobility s_K = delta b^2 "
-                      "h_K^2/((lambda + 2 mu) dt), which stops the pressure "
-                      "oscillations of nodal displacements with cell "
-                      "pressures at small time steps (Rodrigo, Gaspar, Hu, "
-                      "Zikatanov 2016: delta = 1/4); 0 turns it off.");
+                      "delta >= 0 (poromechanics with Face bubbles = false): "
+                      "the pressure increment diffuses with the extra mobility "
+                      "s_K = delta b^2 h_K^2/((lambda + 2 mu) dt) (Rodrigo, "
+                      "Gaspar, Hu, Zikatanov 2016: delta = 1/4), which damps "
+                      "the oscillations of the nodal pair but changes the "
+                      "answers (tight rock: it dominates the permeability); "
+                      "0: none.");
     prm.declare_entry("Fracture normal transmissibility",
                       "1e-9",
                       Patterns::Double(),
@@ -742,6 +753,17 @@ namespace PolyFrac
                       "Model = poromechanics: fixed-stress iterations per "
                       "time step before the step counts as failed (it is "
                       "then halved and retried).");
+    prm.declare_entry(
+      "Coupling scheme",
+      "automatic",
+      Patterns::Selection("automatic|monolithic|fixed-stress"),
+      "Model = poromechanics: monolithic solves each step as one symmetric "
+      "system in the displacement, the normal face bubbles that make the "
+      "displacement-pressure pair stable, and the pressures (direct, "
+      "factorised once per time step length; no fractures, one rank); "
+      "fixed-stress iterates flow and mechanics (with Flow/Pressure "
+      "stabilisation); automatic: monolithic where it applies, else "
+      "fixed-stress.");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(0),
@@ -1183,7 +1205,16 @@ namespace PolyFrac
     nonlinear.max_coupling_iterations =
       prm->get_integer("Maximum coupling iterations");
     nonlinear.anderson_depth = prm->get_integer("Anderson depth");
-    nonlinear.forcing_term   = prm->get_double("Forcing term");
+    {
+      const std::string scheme = prm->get("Coupling scheme");
+      nonlinear.coupling_scheme =
+        scheme == "monolithic" ?
+          NonlinearData::CouplingScheme::monolithic :
+          (scheme == "fixed-stress" ?
+             NonlinearData::CouplingScheme::fixed_stress :
+             NonlinearData::CouplingScheme::automatic);
+    }
+    nonlinear.forcing_term = prm->get_double("Forcing term");
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
@@ -1254,8 +1285,17 @@ namespace PolyFrac
       bounded("Fracture aperture at contact", 0, infinity, false, ">= 0 (m)");
     flow.minimum_aperture =
       bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
+    flow.face_bubbles = prm->get_bool("Face bubbles");
     flow.pressure_stabilisation =
       bounded("Pressure stabilisation", 0, infinity, false, ">= 0");
+    AssertThrow(!flow.face_bubbles || flow.pressure_stabilisation == 0,
+                ExcMessage("In <" + file_name +
+                           ">: Flow/Pressure stabilisation = " +
+                           prm->get("Pressure stabilisation") +
+                           " with Flow/Face bubbles = true: the face bubbles "
+                           "make the pair stable, and the stabilisation would "
+                           "only change the answers. Set it to 0, or set "
+                           "Face bubbles = false."));
     flow.normal_transmissibility = bounded("Fracture normal transmissibility",
                                            0,
                                            infinity,
@@ -1542,16 +1582,24 @@ namespace PolyFrac
                                         "Flux boundary ids",
                                         "Flux boundary expression",
                                         "HFV stabilisation",
+                                        "Face bubbles",
                                         "Pressure stabilisation"})
           warn_if_set("Flow", entry);
         warn_if_set("Exact solution", "Matrix pressure");
         warn_if_set("Exact solution", "Fracture pressure");
       }
+    if (model != "poromechanics")
+      for (const std::string entry : {"Coupling tolerance",
+                                      "Maximum coupling iterations",
+                                      "Anderson depth",
+                                      "Coupling scheme"})
+        warn_if_set("Nonlinear solver", entry);
     if (mesh.refinement == "uniform")
       warn_if_set("Mesh", "Refined fraction", "Mesh/Refinement = uniform");
     if (model == "flow")
       {
         warn_if_set("Flow", "Pressure stabilisation");
+        warn_if_set("Flow", "Face bubbles");
         // The flow AMG keeps ML's smoother; there is no contact Newton.
         warn_if_set("Linear solver", "Smoother sweeps");
         warn_if_set("Nonlinear solver", "Forcing term");

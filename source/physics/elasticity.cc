@@ -466,6 +466,16 @@ namespace PolyFrac
 
 
   template <int dim>
+  Vector<double>
+  Elasticity<dim>::local_load(const LocalReconstruction<dim> &local,
+                              const unsigned int              cell) const
+  {
+    return cell_load(local, cell, *body_force, *initial_stress);
+  }
+
+
+
+  template <int dim>
   void
   Elasticity<dim>::assemble_load(Vector<double> &system_rhs) const
   {

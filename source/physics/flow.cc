@@ -748,4 +748,20 @@ namespace PolyFrac
 
   template class Flow<2>;
   template class Flow<3>;
+  template void
+  Flow<2>::make_pattern(DynamicSparsityPattern &) const;
+  template void
+  Flow<3>::make_pattern(DynamicSparsityPattern &) const;
+  template void
+  Flow<2>::assemble(const FlowStepData &,
+                    const Vector<double> &,
+                    const AffineConstraints<double> &,
+                    SparseMatrix<double> &,
+                    Vector<double> &) const;
+  template void
+  Flow<3>::assemble(const FlowStepData &,
+                    const Vector<double> &,
+                    const AffineConstraints<double> &,
+                    SparseMatrix<double> &,
+                    Vector<double> &) const;
 } // namespace PolyFrac

@@ -4,6 +4,8 @@
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/postprocessing/analytic_solutions.h>
 
+#include <atomic>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -229,8 +231,13 @@ namespace PolyFrac
     skempton = alpha / (S * K + alpha * alpha);
     const double K_v = data.lame_lambda + 2 * mu;
     c                = data.mobility * K_v / (K_v * S + alpha * alpha);
+    static std::atomic<unsigned int> n_instances(0);
+    instance = ++n_instances;
     for (unsigned int n = 0; n < n_stored_roots; ++n)
-      roots.push_back(compute_root(n));
+      {
+        roots.push_back(compute_root(n));
+        term_factors.push_back(series_factors(roots[n]));
+      }
   }
 
 
@@ -342,28 +349,64 @@ namespace PolyFrac
 
 
 
+  std::array<double, 3>
+  Mandel::series_factors(const double alpha)
+  {
+    const double sin_a = std::sin(alpha), cos_a = std::cos(alpha);
+    const double denominator = alpha - sin_a * cos_a;
+    return {
+      {sin_a / denominator, sin_a * cos_a / denominator, cos_a / denominator}};
+  }
+
+
+
   Mandel::Sums
   Mandel::sums(const double xi, const double t) const
   {
     const unsigned int n_roots = n_terms(t);
     check_time(t, n_roots, "Mandel");
+    // The decay factors E_n = exp(−α_n² c t/a²) depend on t only: each
+    // thread keeps those of the last series and time it summed (the error
+    // integrals evaluate one time at many points).
+    // The displacement, its gradient and the pressure at one point ask
+    // for the same sums: the last ones are kept too.
+    thread_local struct
+    {
+      unsigned int        series = 0;
+      double              time   = 0;
+      std::vector<double> decay;
+      double              xi = std::numeric_limits<double>::quiet_NaN();
+      Sums                sums;
+    } cache;
+    if (cache.series != instance || cache.time != t ||
+        cache.decay.size() < n_roots)
+      {
+        cache.series = instance;
+        cache.time   = t;
+        cache.xi     = std::numeric_limits<double>::quiet_NaN();
+        cache.decay.resize(n_roots);
+        for (unsigned int n = 0; n < n_roots; ++n)
+          cache.decay[n] = std::exp(-root(n) * root(n) * c * t / (a * a));
+      }
+    else if (cache.xi == xi)
+      return cache.sums;
     Sums s;
     for (unsigned int n = n_roots; n-- > 0;)
       {
         const double alpha = root(n);
-        const double sin_a = std::sin(alpha), cos_a = std::cos(alpha);
-        const double denominator = alpha - sin_a * cos_a;
-        const double E           = std::exp(-alpha * alpha * c * t / (a * a));
-        const double A           = sin_a / denominator * E;
-        const double D           = cos_a / denominator * E;
-        const double sin_x       = std::sin(alpha * xi / a);
-        const double cos_x       = std::cos(alpha * xi / a);
-        s.a_cos += A * cos_x;
-        s.a_alpha_sin += A * alpha * sin_x;
-        s.c += A * cos_a;
-        s.d_sin += D * sin_x;
-        s.d_alpha_cos += D * alpha * cos_x;
+        const auto   f =
+          n < term_factors.size() ? term_factors[n] : series_factors(alpha);
+        const double E     = cache.decay[n];
+        const double sin_x = std::sin(alpha * xi / a);
+        const double cos_x = std::cos(alpha * xi / a);
+        s.a_cos += f[0] * E * cos_x;
+        s.a_alpha_sin += f[0] * E * alpha * sin_x;
+        s.c += f[1] * E;
+        s.d_sin += f[2] * E * sin_x;
+        s.d_alpha_cos += f[2] * E * alpha * cos_x;
       }
+    cache.xi   = xi;
+    cache.sums = s;
     return s;
   }
 

@@ -128,10 +128,28 @@ namespace PolyFrac
     multiply(u0, Au0);
     multiply(u1, Au1);
     multiply(du, Adu);
-    terms.stored_before += 0.5 * (u0 * Au0);
-    terms.stored_after += 0.5 * (u1 * Au1);
+    double bubble_energy_0 = 0, bubble_energy_1 = 0, bubble_dissipation = 0,
+           bubble_load = 0;
+    if (bubbles != nullptr)
+      {
+        // The bubbles' rows and columns of A: the products gain A_us s,
+        // and s·(A_su u + A_ss s) completes each quadratic form.
+        const Vector<double> &s0 = before.face_bubbles,
+                             &s1 = after.face_bubbles;
+        Vector<double> ds(s1), As;
+        ds -= s0;
+        bubbles->vmult(u0, s0, Au0, As);
+        bubble_energy_0 = s0 * As;
+        bubbles->vmult(u1, s1, Au1, As);
+        bubble_energy_1 = s1 * As;
+        bubbles->vmult(du, ds, Adu, As);
+        bubble_dissipation = ds * As;
+        bubble_load        = bubbles->loads() * ds;
+      }
+    terms.stored_before += 0.5 * (u0 * Au0 + bubble_energy_0);
+    terms.stored_after += 0.5 * (u1 * Au1 + bubble_energy_1);
     terms.dissipation.emplace_back("implicit Euler (mechanics)",
-                                   0.5 * (du * Adu));
+                                   0.5 * (du * Adu + bubble_dissipation));
 
     // The momentum residual R = A u + Σ_σ |σ| λ_σ·[[·]]_σ − F − P
     // vanishes on the free rows; on the Dirichlet rows it is the reaction.
@@ -139,7 +157,7 @@ namespace PolyFrac
     // cancel against the flow equations (doc/energy.md §2).
     Vector<double> load(n);
     elasticity.assemble_load(load);
-    terms.work.emplace_back("loads", load * du);
+    terms.work.emplace_back("loads", load * du + bubble_load);
     Vector<double> R(Au1);
     R -= load;
     R -= coupling.pressure_load(flow.cell_pressures(p_after),

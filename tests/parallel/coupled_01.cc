@@ -9,12 +9,13 @@
 // - prm/poromechanics-2d-slip.prm (a fault that slips under injection,
 //   Coulomb contact, 10 steps), Method = direct (the saddle-point Jacobian
 //   by MUMPS against UMFPACK) and AMG (the condensed Newton steps).
-// The pressures and displacements agree to 1e-10 relative with the direct
-// solvers, to 100 times the linear solver's tolerance with AMG (for
-// poromechanics, that of the Newton steps and of the coupling iteration
-// too: a tenth of their tolerances, at which they stop), and the contact
-// states are the same on every face. The test stops (non-zero exit status) if
-// they do not.
+// Poromechanics runs without face bubbles (not distributed yet), with the
+// nodal pair's pressure stabilisation δ = 1/4. The pressures and displacements
+// agree to 1e-10 relative with the direct solvers, to 100 times the linear
+// solver's tolerance with AMG (for poromechanics, that of the Newton steps and
+// of the coupling iteration too: a tenth of their tolerances, at which they
+// stop), and the contact states are the same on every face. The test stops
+// (non-zero exit status) if they do not.
 
 #include <deal.II/base/mpi.h>
 
@@ -58,8 +59,15 @@ namespace
   check(const std::string &file, const std::string &method)
   {
     Parameters prm(dim);
-    prm.parse(SOURCE_DIR "/../../prm/" + file,
-              {"Linear solver/Method=" + method, "Output/Output directory=."});
+    // The face bubbles of poromechanics are not distributed yet: both runs
+    // take the nodal pair with the pressure stabilisation of Rodrigo et al.
+    std::vector<std::string> settings = {"Linear solver/Method=" + method,
+                                         "Output/Output directory=."};
+    if (std::is_same_v<ModelType, PoromechanicsModel<dim>>)
+      settings.insert(settings.end(),
+                      {"Flow/Face bubbles=false",
+                       "Flow/Pressure stabilisation=0.25"});
+    prm.parse(SOURCE_DIR "/../../prm/" + file, settings);
     const auto   distributed = run<dim, ModelType>(prm, MPI_COMM_WORLD);
     const auto   serial      = run<dim, ModelType>(prm, MPI_COMM_SELF);
     const double p_difference =

@@ -9,7 +9,9 @@
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/physics/biot_coupling.h>
+#include <polyfrac/physics/biot_system.h>
 #include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/face_bubbles.h>
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
 #include <polyfrac/postprocessing/energy_balance.h>
@@ -30,20 +32,26 @@ namespace PolyFrac
    * the cubic law, with the same discrete divergence and jump as the
    * momentum equation (BiotCoupling).
    *
-   * Each step is solved by the fixed-stress fixed point (Mikelić–Wheeler):
-   * flow with the mechanics of the last iterate and the relaxation
-   * L (p^{k+1} − p^k) in the cells, L = b²/K_dr with K_dr = λ + 2μ/d, and
-   * a_σ (p_f^{k+1} − p_f^k) on the fracture faces: on a face open in the
-   * last iterate, a_σ is its opening under a unit pressure in all
-   * fractures with every face free (a probe of the elastic operator, once
-   * per level); on a face in contact a_σ = 0, since its normal jump does
-   * not follow p_f (with the probed value there, the B6 scene needed 39
-   * coupling iterations instead of 11); then mechanics (Elasticity, or
-   * ContactMechanics with the Coulomb slip increment from the start of the
-   * step) under the new pressures. The iterations stop when
-   * max|Δu|/max|u| + max|Δp|/max|p| ≤ Nonlinear solver/Coupling tolerance;
-   * a step that reaches Maximum coupling iterations, or whose contact solve
-   * fails, reports failure with the state unchanged (the driver halves it).
+   * Without fractures on one rank (Nonlinear solver/Coupling scheme =
+   * automatic or monolithic), each step is one symmetric saddle-point solve
+   * of BiotSystem, in the displacement, the normal face bubbles
+   * (FaceBubbles: the stable pair, no pressure stabilisation) and the
+   * pressures, factorised once per time step length.
+   *
+   * Otherwise each step is solved by the fixed-stress fixed point
+   * (Mikelić–Wheeler): flow with the mechanics of the last iterate and the
+   * relaxation L (p^{k+1} − p^k) in the cells, L = b²/K_dr with K_dr = λ +
+   * 2μ/d, and a_σ (p_f^{k+1} − p_f^k) on the fracture faces: on a face open in
+   * the last iterate, a_σ is its opening under a unit pressure in all fractures
+   * with every face free (a probe of the elastic operator, once per level); on
+   * a face in contact a_σ = 0, since its normal jump does not follow p_f (with
+   * the probed value there, the B6 scene needed 39 coupling iterations instead
+   * of 11); then mechanics (Elasticity, or ContactMechanics with the Coulomb
+   * slip increment from the start of the step) under the new pressures. The
+   * iterations stop when max|Δu|/max|u| + max|Δp|/max|p| ≤ Nonlinear
+   * solver/Coupling tolerance; a step that reaches Maximum coupling iterations,
+   * or whose contact solve fails, reports failure with the state unchanged (the
+   * driver halves it).
    */
   template <int dim>
   class PoromechanicsModel : public Model<dim>
@@ -133,6 +141,15 @@ namespace PolyFrac
                     const MechanicalState<dim> &u_new,
                     const Vector<double>       &p_new);
 
+    /** The step of the monolithic scheme (BiotSystem). */
+    StepReport
+    monolithic_step(const double t_old, const double t_new, std::ostream &out);
+
+    /** Throws naming the entry if Coupling scheme = monolithic where it
+     * does not apply (fractures, several ranks); whether it is used. */
+    bool
+    use_monolithic_scheme() const;
+
     /** a_σ: the opening per unit fracture pressure of each face (probe). */
     std::vector<double>
     fracture_compliance();
@@ -149,13 +166,15 @@ namespace PolyFrac
                       const MechanicalState<dim> &u_k,
                       const Vector<double>       &p_k) const;
 
-    /** The mechanics at time @p t under the pressures @p p, from the state
+    /** The mechanics at time @p t under the pressures @p p and the pull of
+     * the face bubbles @p s (if any), from the state
      * @p start of the step (the Coulomb slip reference), Newton starting
      * from @p guess (the previous coupling iterate); returns the Newton
      * iterations (contact). */
     unsigned int
     solve_mechanics(const double                t,
                     const Vector<double>       &p,
+                    const Vector<double>       &s,
                     const MechanicalState<dim> &start,
                     const MechanicalState<dim> &guess,
                     MechanicalState<dim>       &result);
@@ -175,6 +194,12 @@ namespace PolyFrac
     Elasticity<dim> elasticity;
     /** The energy balance of each step (doc/energy.md). */
     EnergyBalance<dim> energy_balance;
+    /** The normal face bubbles and the system of the monolithic scheme,
+     * when it is used. */
+    std::unique_ptr<FaceBubbles<dim>> bubbles;
+    std::unique_ptr<BiotSystem<dim>>  system;
+    /** Whether each step is one BiotSystem::step() (else fixed-stress). */
+    bool monolithic = false;
     /** Contact mechanics, when the scene has fractures. */
     std::unique_ptr<ContactMechanics<dim>> contact;
     /** L = b²/(λ + 2μ/d). */

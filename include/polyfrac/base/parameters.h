@@ -261,8 +261,12 @@ namespace PolyFrac
       double aperture_at_contact;
       /** Minimum fracture aperture > 0: the floor of d_f in the cubic law. */
       double minimum_aperture;
-      /** Pressure stabilisation δ ≥ 0: the mobility δ b² h_K²/((λ+2μ) Δt)
-       * of the pressure increment in poromechanics (0: none). */
+      /** Whether poromechanics enriches the displacement with the normal
+       * face bubbles that make the pair with cell pressures stable
+       * (FaceBubbles). */
+      bool face_bubbles;
+      /** Pressure stabilisation δ ≥ 0 of the pair without face bubbles: the
+       * mobility δ b² h_K²/((λ+2μ) Δt) of the pressure increment (0: none). */
       double pressure_stabilisation;
       /** Fracture normal transmissibility Λ_f ≥ 0. */
       double normal_transmissibility;
@@ -298,6 +302,18 @@ namespace PolyFrac
       unsigned int max_coupling_iterations;
       /** Anderson depth m ≥ 0 of the fixed-stress iteration (0: plain). */
       unsigned int anderson_depth;
+      /** How a poromechanical step couples flow and mechanics. */
+      enum class CouplingScheme
+      {
+        /** monolithic without fractures on one rank, else fixed_stress */
+        automatic,
+        /** one saddle-point system in (u, face bubbles, p): BiotSystem */
+        monolithic,
+        /** the fixed-stress iteration of PoromechanicsModel */
+        fixed_stress
+      };
+      /** Coupling scheme of poromechanics. */
+      CouplingScheme coupling_scheme;
       /**
        * Forcing term η ≥ 0 of the inexact Newton steps: a condensed step's
        * Krylov solve may stop at η times the relative complementarity

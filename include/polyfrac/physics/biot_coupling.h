@@ -59,6 +59,13 @@ namespace PolyFrac
     std::vector<double>
     normal_jumps(const Vector<double> &u) const;
 
+    /** D: (D u)_K = |K| div_K u, one row per cell. */
+    const SparseMatrix<double> &
+    divergence_matrix() const
+    {
+      return divergence;
+    }
+
   private:
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;

@@ -187,6 +187,20 @@ namespace PolyFrac
     assemble_operator(TrilinosWrappers::SparseMatrix &system_matrix,
                       Vector<double>                 &system_rhs) const;
 
+    /**
+     * The local stiffness |K| σ_K(u):ε_K(v) + (2μ + λ) S_K(u, v) of the
+     * reconstruction @p local, on its dim × n_local() scalar unknowns
+     * (component d of local unknown t is row dim t + d).
+     */
+    FullMatrix<double>
+    local_stiffness(const LocalReconstruction<dim> &local) const;
+
+    /** The load ∫_K f·Π^K v − |K| σ0:ε_K(v) of the local unknowns of
+     * @p local on cell @p cell, at the time of set_time(). */
+    Vector<double>
+    local_load(const LocalReconstruction<dim> &local,
+               const unsigned int              cell) const;
+
   private:
     /** @p system_rhs += @p loads summed over the ranks (each rank's
      * contributions on entry; @p loads holds the sum on return). */
@@ -206,9 +220,6 @@ namespace PolyFrac
      * boundary id of the parameters is carried by no boundary face. */
     void
     check_boundary_ids() const;
-
-    FullMatrix<double>
-    local_stiffness(const LocalReconstruction<dim> &local) const;
 
     /** Whether face @p face lies on the boundary with a Neumann boundary
      * id (Boundary conditions/Neumann boundary ids). */

@@ -200,7 +200,6 @@ namespace PolyFrac
       return cell_mobility[c];
     }
 
-  private:
     /** The constraints of one step: the pressure data, and the previous
      * pressures of the unknowns without an equation (inactive cells). */
     void
@@ -213,11 +212,6 @@ namespace PolyFrac
     template <typename PatternType>
     void
     make_pattern(PatternType &pattern) const;
-
-    /** The pattern (make_pattern()) and the matrix of one rank. */
-    void
-    make_serial_matrix(SparsityPattern      &sparsity,
-                       SparseMatrix<double> &matrix) const;
 
     /**
      * The linear system of one step with @p constraints: this rank's cells
@@ -233,6 +227,12 @@ namespace PolyFrac
              const AffineConstraints<double> &constraints,
              MatrixType                      &matrix,
              Vector<double>                  &rhs) const;
+
+  private:
+    /** The pattern (make_pattern()) and the matrix of one rank. */
+    void
+    make_serial_matrix(SparsityPattern      &sparsity,
+                       SparseMatrix<double> &matrix) const;
 
     /**
      * solve_step() on several ranks: the system in a distributed Trilinos

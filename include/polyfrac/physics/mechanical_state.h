@@ -64,6 +64,9 @@ namespace PolyFrac
   {
     /** The displacement: node sides, then bubbles (DoFMap numbering). */
     Vector<double> displacement;
+    /** The normal face bubbles s_σ (FaceBubbles numbering) of the
+     * monolithic poromechanical step; empty where the scheme has none. */
+    Vector<double> face_bubbles;
     /** λ_σ (= −T^+) per fracture face, in global components: the computed
      * multipliers (contact mechanics) or the prescribed traction. */
     std::vector<Tensor<1, dim>> multipliers;

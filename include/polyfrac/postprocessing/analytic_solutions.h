@@ -8,6 +8,7 @@
 
 #include <polyfrac/base/parameters.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -242,6 +243,12 @@ namespace PolyFrac
     double
     vertical_strain(const double t) const;
 
+    /** The factors of the term of root @p alpha that depend neither on ξ
+     * nor on t: A_n, C_n = A_n cos α_n and D_n, with A_n = sin α_n/(α_n −
+     * sin α_n cos α_n) and D_n = cos α_n/(α_n − sin α_n cos α_n). */
+    static std::array<double, 3>
+    series_factors(const double alpha);
+
     /** Computes α_n by Newton's method safeguarded by bisection. */
     double
     compute_root(const unsigned int n) const;
@@ -251,6 +258,11 @@ namespace PolyFrac
     double         nu, nu_u, skempton, c;
     /** The first roots, computed once. */
     std::vector<double> roots;
+    /** A number of this series, different for every Mandel object made
+     * (sums() keeps its decay factors per thread under it). */
+    unsigned int instance;
+    /** series_factors() of the stored roots, computed once. */
+    std::vector<std::array<double, 3>> term_factors;
   };
 
   /**

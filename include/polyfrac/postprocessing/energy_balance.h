@@ -15,6 +15,7 @@
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/physics/biot_coupling.h>
 #include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/face_bubbles.h>
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
 
@@ -98,6 +99,15 @@ namespace PolyFrac
           const FlowStepData         &data,
           const bool                  contact) const;
 
+    /** The states carry normal face bubbles (MechanicalState::face_bubbles)
+     * of @p face_bubbles (which must outlive this object): their stiffness
+     * and loads enter the mechanical terms. */
+    void
+    use_face_bubbles(const FaceBubbles<dim> &face_bubbles)
+    {
+      bubbles = &face_bubbles;
+    }
+
   private:
     /** ½ a_h(u^n, u^n) − ½ a_h(u^{n−1}, u^{n−1}), ½ a_h(δu, δu), the
      * loads and reactions, and the multiplier terms. */
@@ -133,6 +143,8 @@ namespace PolyFrac
     std::vector<BlockCoefficients> jumps;
     /** The Tresca threshold g(x̄_σ) per fracture face (0 unless Tresca). */
     std::vector<double> tresca_threshold;
+    /** The face bubbles of the states, or none. */
+    const FaceBubbles<dim> *bubbles = nullptr;
     /** A, the unconstrained elastic operator, and its pattern. */
     SparsityPattern      sparsity;
     SparseMatrix<double> stiffness;

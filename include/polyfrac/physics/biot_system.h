@@ -1,0 +1,196 @@
+#ifndef polyfrac_physics_biot_system_h
+#define polyfrac_physics_biot_system_h
+
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/dofs/dof_map.h>
+#include <polyfrac/dofs/pressure_dof_map.h>
+#include <polyfrac/physics/biot_coupling.h>
+#include <polyfrac/physics/elasticity.h>
+#include <polyfrac/physics/face_bubbles.h>
+#include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/mechanical_state.h>
+
+#include <memory>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The implicit Euler step of poroelasticity as one symmetric saddle-point
+   * system (doc/scheme.md §10), in one of two sets of unknowns:
+   *
+   * - Unknowns::all, x = (u, s, p), the node-side displacements u, the
+   *   normal face bubbles s (FaceBubbles) and the HFV pressures p
+   *   (PressureDoFMap) of a linear step without fractures:
+   *
+   *   [ A_uu   A_us  −b D_uᵀ ] [u]   [ F_u                              ]
+   *   [ A_su   A_ss  −b D_sᵀ ] [s] = [ F_s                              ]
+   *   [ −b D_u −b D_s −Δt H  ] [p]   [ −Δt h − b (D_u u^{n−1} + D_s s^{n−1}) ]
+   *
+   * - Unknowns::bubbles_and_pressures, x = (s, p), the flow half of a
+   *   fixed-stress iteration: the node sides and the fracture bubbles at
+   *   the iterate u^k (their volume change and the relaxation L are in
+   *   the FlowStepData of the step, which also carries the fracture
+   *   storage and apertures), so the rows are those above with u^k moved
+   *   to the right: F_s − A_su u^k and −Δt h − b D_s s^{n−1}.
+   *
+   * A is the elastic stiffness of the scheme (bubbles included), D the
+   * cell volume changes |K| div_K (BiotCoupling, FaceBubbles), H and h the
+   * HFV matrix and right-hand side of the step (Flow::assemble(): storage,
+   * fluxes, fracture flow and exchange, sources and flux data), scaled by
+   * −Δt so that the system is symmetric. The pair (u + s, p) is inf-sup
+   * stable, so no pressure stabilisation is needed and none is added.
+   *
+   * Dirichlet data of u and prescribed pressures enter by lifting: with
+   * x_g the prescribed values, the system matrix has unit rows and columns
+   * on the prescribed unknowns and the right-hand side is r − K x_g. With
+   * Unknowns::all the matrix depends on Δt only: its UMFPACK factorisation
+   * is made once and reused by every step of the same Δt. The fixed-stress
+   * half is factorised at every call (its apertures and fracture storage
+   * change).
+   *
+   * @code
+   *   BiotSystem<dim> system(prm, dofs, pressure_dofs, flow, coupling,
+   *                          elasticity, bubbles,
+   * BiotSystem<dim>::Unknowns::all); system.step(t_new, dt, state, pressure,
+   * new_state, new_pressure);
+   * @endcode
+   */
+  template <int dim>
+  class BiotSystem
+  {
+  public:
+    /** Which unknowns the system holds. */
+    enum class Unknowns
+    {
+      /** u, s and p: the monolithic linear step (step()). */
+      all,
+      /** s and p at a given u: a fixed-stress flow step
+       * (solve_bubbles_and_pressures()). */
+      bubbles_and_pressures
+    };
+
+    /** All arguments must outlive this object. */
+    BiotSystem(const Parameters          &prm,
+               const DoFMap<dim>         &dofs,
+               const PressureDoFMap<dim> &pressure_dofs,
+               const Flow<dim>           &flow,
+               const BiotCoupling<dim>   &coupling,
+               Elasticity<dim>           &elasticity,
+               const FaceBubbles<dim>    &bubbles,
+               const Unknowns             unknowns);
+
+    /**
+     * Unknowns::all: the step to @p time from (@p before, @p p_before),
+     * @p time_step long: writes the displacement and the bubbles to
+     * @p after and the pressures to @p p_after. Factorises the system when
+     * @p time_step differs from the last step's.
+     */
+    void
+    step(const double                time,
+         const double                time_step,
+         const MechanicalState<dim> &before,
+         const Vector<double>       &p_before,
+         MechanicalState<dim>       &after,
+         Vector<double>             &p_after);
+
+    /**
+     * Unknowns::bubbles_and_pressures: the bubbles @p s and pressures
+     * @p p of the flow step @p data from the start of the step
+     * (@p before, @p p_before) at the mechanics iterate @p u_k.
+     */
+    void
+    solve_bubbles_and_pressures(const FlowStepData         &data,
+                                const MechanicalState<dim> &before,
+                                const Vector<double>       &p_before,
+                                const MechanicalState<dim> &u_k,
+                                Vector<double>             &s,
+                                Vector<double>             &p);
+
+    /** Number of unknowns of the system (prescribed ones included). */
+    types::global_dof_index
+    n_dofs() const
+    {
+      return n_u + n_s + n_p;
+    }
+
+    /** Number of factorisations made so far. */
+    unsigned int
+    n_factorisations() const
+    {
+      return factorisations;
+    }
+
+  private:
+    /** The constraints of the step (with Unknowns::all the Dirichlet data
+     * of u at the time of @p data; the prescribed pressures), in the
+     * numbering of x. */
+    void
+    make_constraints(const FlowStepData &data, const Vector<double> &p_before);
+
+    /** The pattern of the whole system. */
+    void
+    make_pattern();
+
+    /** The flow block of @p data and, unless the factorisation of the
+     * step's Δt can be kept, the matrix K and its factorisation; the flow's
+     * right-hand side h into @p flow_rhs. */
+    void
+    assemble_and_factorise(const FlowStepData   &data,
+                           const Vector<double> &p_before,
+                           Vector<double>       &flow_rhs);
+
+    /** The constrained copy of #matrix, factorised. */
+    void
+    factorise();
+
+    /** Solves K x = @p rhs with the prescribed values of #constraints. */
+    Vector<double>
+    solve(Vector<double> &rhs) const;
+
+    /** Adds the pressure rows' right-hand side −Δt h − b D_s s^{n−1} to
+     * @p rhs. */
+    void
+    add_mass_rhs(const FlowStepData         &data,
+                 const Vector<double>       &flow_rhs,
+                 const MechanicalState<dim> &before,
+                 Vector<double>             &rhs) const;
+
+    const Parameters          &prm;
+    const DoFMap<dim>         &dofs;
+    const PressureDoFMap<dim> &pressure_dofs;
+    const Flow<dim>           &flow;
+    const BiotCoupling<dim>   &coupling;
+    Elasticity<dim>           &elasticity;
+    const FaceBubbles<dim>    &bubbles;
+    const Unknowns             unknowns;
+    /** Sizes of the blocks u (0 with bubbles_and_pressures), s and p. */
+    const types::global_dof_index n_u, n_s, n_p;
+    /** The prescribed unknowns of x and their values at the step. */
+    AffineConstraints<double> constraints;
+    SparsityPattern           sparsity;
+    /** K, unconstrained. */
+    SparseMatrix<double> matrix;
+    /** S K_c S: K with unit rows and columns on the prescribed unknowns,
+     * scaled by S = diag(|K_c,ii|^{−1/2}) (#scaling). */
+    SparseMatrix<double> constrained_matrix;
+    /** The diagonal of S. */
+    Vector<double> scaling;
+    /** The pattern and matrix of the flow block (Flow::assemble()). */
+    SparsityPattern      flow_sparsity;
+    SparseMatrix<double> flow_matrix;
+    SparseDirectUMFPACK  direct;
+    /** Δt of the factorisation of Unknowns::all (0: none yet). */
+    double       factorised_step = 0;
+    unsigned int factorisations  = 0;
+  };
+} // namespace PolyFrac
+
+#endif

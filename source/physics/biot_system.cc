@@ -1,0 +1,332 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <polyfrac/physics/biot_system.h>
+
+#include <cmath>
+
+namespace PolyFrac
+{
+  template <int dim>
+  BiotSystem<dim>::BiotSystem(const Parameters          &prm,
+                              const DoFMap<dim>         &dofs,
+                              const PressureDoFMap<dim> &pressure_dofs,
+                              const Flow<dim>           &flow,
+                              const BiotCoupling<dim>   &coupling,
+                              Elasticity<dim>           &elasticity,
+                              const FaceBubbles<dim>    &bubbles,
+                              const Unknowns             unknowns)
+    : prm(prm)
+    , dofs(dofs)
+    , pressure_dofs(pressure_dofs)
+    , flow(flow)
+    , coupling(coupling)
+    , elasticity(elasticity)
+    , bubbles(bubbles)
+    , unknowns(unknowns)
+    , n_u(unknowns == Unknowns::all ? dofs.n_displacement_dofs() : 0)
+    , n_s(bubbles.n_bubbles())
+    , n_p(pressure_dofs.n_dofs())
+  {
+    AssertThrow(!dofs.is_distributed(),
+                ExcMessage("In <" + prm.file_name +
+                           ">: the normal face bubbles of poromechanics (the "
+                           "stable displacement-pressure pair) are not yet "
+                           "available on several ranks: run on one rank."));
+    make_pattern();
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::make_pattern()
+  {
+    const bool             all = unknowns == Unknowns::all;
+    DynamicSparsityPattern pattern(n_dofs());
+    if (all)
+      dofs.add_cell_couplings(pattern);
+    bubbles.add_couplings(pattern, n_u, all);
+    const auto &divide = coupling.divergence_matrix();
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      {
+        const types::global_dof_index p_K =
+          n_u + n_s + pressure_dofs.cell_dof(c);
+        for (const unsigned int j : bubbles.cell_block(c).bubbles)
+          {
+            pattern.add(n_u + j, p_K);
+            pattern.add(p_K, n_u + j);
+          }
+        for (auto entry = divide.begin(c); all && entry != divide.end(c);
+             ++entry)
+          {
+            pattern.add(p_K, entry->column());
+            pattern.add(entry->column(), p_K);
+          }
+      }
+    DynamicSparsityPattern flow_pattern(n_p);
+    flow.make_pattern(flow_pattern);
+    for (unsigned int row = 0; row < n_p; ++row)
+      for (auto entry = flow_pattern.begin(row); entry != flow_pattern.end(row);
+           ++entry)
+        pattern.add(n_u + n_s + row, n_u + n_s + entry->column());
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      pattern.add(i, i);
+    sparsity.copy_from(pattern);
+    matrix.reinit(sparsity);
+    constrained_matrix.reinit(sparsity);
+    flow_sparsity.copy_from(flow_pattern);
+    flow_matrix.reinit(flow_sparsity);
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::make_constraints(const FlowStepData   &data,
+                                    const Vector<double> &p_before)
+  {
+    AffineConstraints<double> pressure_constraints;
+    flow.make_constraints(data, p_before, pressure_constraints);
+    constraints.clear();
+    const auto copy = [&](const AffineConstraints<double> &from,
+                          const types::global_dof_index    offset) {
+      for (const auto &line : from.get_lines())
+        {
+          AssertThrow(line.entries.empty(),
+                      ExcInternalError("a prescribed unknown that depends "
+                                       "on others"));
+          constraints.add_line(offset + line.index);
+          constraints.set_inhomogeneity(offset + line.index,
+                                        line.inhomogeneity);
+        }
+    };
+    if (unknowns == Unknowns::all)
+      {
+        elasticity.set_time(data.time);
+        elasticity.make_constraints();
+        copy(elasticity.get_constraints(), 0);
+      }
+    copy(pressure_constraints, n_u + n_s);
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::assemble_and_factorise(const FlowStepData   &data,
+                                          const Vector<double> &p_before,
+                                          Vector<double>       &flow_rhs)
+  {
+    // The flow block: H and h of the step, unconstrained (the prescribed
+    // pressures are lifted with the displacement data).
+    flow_matrix = 0;
+    flow.assemble(
+      data, p_before, AffineConstraints<double>(), flow_matrix, flow_rhs);
+    const bool all = unknowns == Unknowns::all;
+    if (all && factorised_step == data.time_step)
+      return; // the caller rounded Δt to the factorised one
+
+    matrix = 0;
+    if (all)
+      {
+        Vector<double> unused(n_dofs());
+        elasticity.assemble_operator(matrix, unused);
+      }
+    bubbles.add_stiffness(matrix, n_u, all);
+    const double b      = prm.flow.biot_coefficient;
+    const auto  &divide = coupling.divergence_matrix();
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      {
+        const types::global_dof_index p_K =
+          n_u + n_s + pressure_dofs.cell_dof(c);
+        for (auto entry = divide.begin(c); all && entry != divide.end(c);
+             ++entry)
+          {
+            matrix.add(entry->column(), p_K, -b * entry->value());
+            matrix.add(p_K, entry->column(), -b * entry->value());
+          }
+        const auto &block = bubbles.cell_block(c);
+        for (unsigned int j = 0; j < block.bubbles.size(); ++j)
+          {
+            const types::global_dof_index s_j = n_u + block.bubbles[j];
+            matrix.add(s_j, p_K, -b * block.divergence[j]);
+            matrix.add(p_K, s_j, -b * block.divergence[j]);
+          }
+      }
+    const double dt = data.time_step;
+    for (unsigned int row = 0; row < n_p; ++row)
+      for (auto entry = flow_matrix.begin(row); entry != flow_matrix.end(row);
+           ++entry)
+        matrix.add(n_u + n_s + row,
+                   n_u + n_s + entry->column(),
+                   -dt * entry->value());
+    factorise();
+    factorised_step = all ? dt : 0;
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::factorise()
+  {
+    constrained_matrix.copy_from(matrix);
+    for (const auto &line : constraints.get_lines())
+      {
+        const auto i = line.index;
+        for (auto entry = constrained_matrix.begin(i);
+             entry != constrained_matrix.end(i);
+             ++entry)
+          {
+            // The pattern is structurally symmetric: clear column i too.
+            entry->value() = 0;
+            constrained_matrix.set(entry->column(), i, 0.);
+          }
+      }
+    for (const auto &line : constraints.get_lines())
+      constrained_matrix.set(line.index, line.index, 1.);
+    // Symmetric diagonal scaling: the stiffness (~ 2μ+λ), the bubbles and
+    // the pressure block (~ Δt k/η, many orders of magnitude below) get
+    // unit diagonals, so UMFPACK's threshold pivoting keeps the diagonal
+    // pivots of its fill-reducing order (the system is quasi-definite);
+    // unscaled, it pivots off the diagonal and the fill explodes.
+    scaling.reinit(n_dofs());
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      {
+        const double diagonal = std::abs(constrained_matrix.diag_element(i));
+        scaling(i)            = diagonal > 0 ? 1 / std::sqrt(diagonal) : 1.;
+      }
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      for (auto entry = constrained_matrix.begin(i);
+           entry != constrained_matrix.end(i);
+           ++entry)
+        entry->value() *= scaling(i) * scaling(entry->column());
+    direct.initialize(constrained_matrix);
+    ++factorisations;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  BiotSystem<dim>::solve(Vector<double> &rhs) const
+  {
+    // Lifting: x = x_0 + x_g, K_c x_0 = r − K x_g on the free unknowns.
+    Vector<double> lifted(n_dofs()), correction(n_dofs()), x(n_dofs());
+    for (const auto &line : constraints.get_lines())
+      lifted(line.index) = line.inhomogeneity;
+    matrix.vmult(correction, lifted);
+    rhs -= correction;
+    for (const auto &line : constraints.get_lines())
+      rhs(line.index) = 0;
+    rhs.scale(scaling);
+    direct.vmult(x, rhs);
+    x.scale(scaling);
+    x += lifted;
+    return x;
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::add_mass_rhs(const FlowStepData         &data,
+                                const Vector<double>       &flow_rhs,
+                                const MechanicalState<dim> &before,
+                                Vector<double>             &rhs) const
+  {
+    const double              b = prm.flow.biot_coefficient;
+    const std::vector<double> bubble_volume =
+      bubbles.volume_changes(before.face_bubbles);
+    for (unsigned int i = 0; i < n_p; ++i)
+      rhs(n_u + n_s + i) -= data.time_step * flow_rhs(i);
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      rhs(n_u + n_s + pressure_dofs.cell_dof(c)) -= b * bubble_volume[c];
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::step(const double                time,
+                        const double                time_step,
+                        const MechanicalState<dim> &before,
+                        const Vector<double>       &p_before,
+                        MechanicalState<dim>       &after,
+                        Vector<double>             &p_after)
+  {
+    Assert(unknowns == Unknowns::all, ExcInternalError());
+    // Steps of one length differ by round-off (t^n − t^{n−1}): they keep
+    // the factorisation of that length.
+    const bool same_length =
+      std::abs(time_step - factorised_step) <= 1e-12 * time_step;
+    const FlowStepData data =
+      flow.flow_step_data(time, same_length ? factorised_step : time_step);
+    make_constraints(data, p_before);
+    Vector<double> flow_rhs;
+    assemble_and_factorise(data, p_before, flow_rhs);
+
+    Vector<double> rhs(n_dofs());
+    elasticity.assemble_load(rhs);
+    const Vector<double> s_load = bubbles.loads();
+    for (unsigned int j = 0; j < n_s; ++j)
+      rhs(n_u + j) = s_load(j);
+    add_mass_rhs(data, flow_rhs, before, rhs);
+    const double              b = prm.flow.biot_coefficient;
+    const std::vector<double> volume =
+      coupling.volume_changes(before.displacement);
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      rhs(n_u + n_s + pressure_dofs.cell_dof(c)) -= b * volume[c];
+    const Vector<double> x = solve(rhs);
+
+    after = before;
+    after.displacement.reinit(n_u);
+    after.face_bubbles.reinit(n_s);
+    p_after.reinit(n_p);
+    for (types::global_dof_index i = 0; i < n_u; ++i)
+      after.displacement(i) = x(i);
+    for (types::global_dof_index i = 0; i < n_s; ++i)
+      after.face_bubbles(i) = x(n_u + i);
+    for (types::global_dof_index i = 0; i < n_p; ++i)
+      p_after(i) = x(n_u + n_s + i);
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::solve_bubbles_and_pressures(
+    const FlowStepData         &data,
+    const MechanicalState<dim> &before,
+    const Vector<double>       &p_before,
+    const MechanicalState<dim> &u_k,
+    Vector<double>             &s,
+    Vector<double>             &p)
+  {
+    Assert(unknowns == Unknowns::bubbles_and_pressures, ExcInternalError());
+    make_constraints(data, p_before);
+    Vector<double> flow_rhs;
+    assemble_and_factorise(data, p_before, flow_rhs);
+
+    // F_s − A_su u^k: the bubbles' part of the product at s = 0.
+    Vector<double> rhs(n_dofs()), unused(u_k.displacement.size()), As;
+    bubbles.vmult(u_k.displacement, Vector<double>(n_s), unused, As);
+    Vector<double> s_load = bubbles.loads();
+    s_load -= As;
+    for (unsigned int j = 0; j < n_s; ++j)
+      rhs(j) = s_load(j);
+    add_mass_rhs(data, flow_rhs, before, rhs);
+    const Vector<double> x = solve(rhs);
+    s.reinit(n_s);
+    p.reinit(n_p);
+    for (types::global_dof_index i = 0; i < n_s; ++i)
+      s(i) = x(i);
+    for (types::global_dof_index i = 0; i < n_p; ++i)
+      p(i) = x(n_s + i);
+  }
+
+
+
+  template class BiotSystem<2>;
+  template class BiotSystem<3>;
+} // namespace PolyFrac
