@@ -14,6 +14,7 @@ fixed-stress scheme without (delta = 0) and with its pressure stabilisation
 
 usage: benchmarks/terzaghi_small_steps.py [POLYFRAC] [CELLS ...]
 (run from the repository root; needs python3-meshio)."""
+import csv
 import glob
 import os
 import subprocess
@@ -71,8 +72,8 @@ for cell_type, n, delta in [(t, n, d) for t in ["hypercube", "simplex"]
         rising = int(np.sum(d1 > 1e-9 * p0))
         d2 = np.diff(p, 2)
         changes = int(np.sum(np.diff(np.sign(d2[np.abs(d2) > 1e-9 * p0])) != 0))
-        series = open(f"{out}/time_series-level-0.csv").read().splitlines()[-1]
-        err = float(series.split(",")[10])
+        with open(f"{out}/time_series-level-0.csv") as table:
+            err = float(list(csv.DictReader(table))[-1]["err_pressure"])
         print(f"{cell_type[0]} {n:5d}  {delta:>7}  {f:6.0e}  {dt:10.3e}  {err:12.4e}  "
               f"{p.max() / p0 - 1:12.3e}  {p.min() / p0:8.4f}  {rising:4d}  "
               f"{changes:4d}")

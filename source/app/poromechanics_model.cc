@@ -11,15 +11,18 @@ namespace PolyFrac
 {
   namespace
   {
-    /** max_k |a_k − b_k| / max(max_k |a_k|, tiny): a relative increment. */
+    /** max_k |a_k − b_k| / max(max_k |a_k|, @p floor): a relative
+     * increment, whose floor keeps round-off of a state at rest from being
+     * measured against itself (0 if both vanish). */
     double
-    relative_increment(const Vector<double> &a, const Vector<double> &b)
+    relative_increment(const Vector<double> &a,
+                       const Vector<double> &b,
+                       const double          floor)
     {
       Vector<double> difference = a;
       difference -= b;
-      const double scale = a.linfty_norm();
-      return scale > 0 ? difference.linfty_norm() / scale :
-                         difference.linfty_norm();
+      const double scale = std::max(a.linfty_norm(), floor);
+      return scale > 0 ? difference.linfty_norm() / scale : 0.;
     }
 
     /** The vector (@p a, @p b). */
@@ -217,12 +220,13 @@ namespace PolyFrac
   double
   PoromechanicsModel<dim>::energy_residual(const FlowStepData         &data,
                                            const MechanicalState<dim> &u_new,
-                                           const Vector<double>       &p_new)
+                                           const Vector<double>       &p_new,
+                                           const double energy_scale)
   {
     elasticity.set_time(data.time);
     const EnergyTerms terms = energy_balance.terms(
       state, u_new, pressure, p_new, data, contact != nullptr);
-    const double residual = terms.residual();
+    const double residual = terms.residual(energy_scale);
     const double bound =
       10 * std::max(prm.nonlinear.coupling_tolerance, prm.nonlinear.tolerance);
     if (std::abs(residual) > bound)
@@ -242,6 +246,24 @@ namespace PolyFrac
         AssertThrow(false, ExcMessage(what.str() + "."));
       }
     return residual;
+  }
+
+
+
+  template <int dim>
+  typename PoromechanicsModel<dim>::Scales
+  PoromechanicsModel<dim>::scales(const Vector<double> &p) const
+  {
+    double stress = std::max(elasticity.load_scale(), p.linfty_norm());
+    for (const Tensor<1, dim> &lambda : state.multipliers)
+      stress = std::max(stress, lambda.norm());
+    const double modulus  = prm.lame_lambda + 2 * prm.lame_mu;
+    const auto  &geometry = *discretization.geometry;
+    const double floor    = 1e-6;
+    return {floor * stress * geometry.domain_diameter() / modulus,
+            floor * stress,
+            floor * floor * stress * stress * geometry.domain_measure() /
+              modulus};
   }
 
 
@@ -394,12 +416,11 @@ namespace PolyFrac
     if (monolithic)
       return monolithic_step(t_old, t_new, out);
     const double time_step = t_new - t_old;
+    elasticity.set_time(t_new);
+    // Loads and Dirichlet data at t^n: reassembled once per step.
     if (!contact)
-      {
-        // Loads and Dirichlet data at t^n: reassembled once per step.
-        elasticity.set_time(t_new);
-        elasticity.assemble();
-      }
+      elasticity.assemble();
+    const Scales scale = scales(pressure);
 
     StepReport report;
     report.coupling_iterations         = 0;
@@ -447,8 +468,9 @@ namespace PolyFrac
             u_next.face_bubbles = s_next;
             increment =
               relative_increment(join(u_next.displacement, s_next),
-                                 join(u_k.displacement, u_k.face_bubbles)) +
-              relative_increment(image, p_k);
+                                 join(u_k.displacement, u_k.face_bubbles),
+                                 scale.displacement) +
+              relative_increment(image, p_k, scale.pressure);
             report.coupling_increments.push_back(increment);
             u_k                        = u_next;
             p_k                        = p_next;
@@ -480,7 +502,7 @@ namespace PolyFrac
         return report;
       }
 
-    report.energy_residual = energy_residual(data, u_k, p_k);
+    report.energy_residual = energy_residual(data, u_k, p_k, scale.energy);
     state                  = u_k;
     pressure               = p_k;
 
@@ -536,7 +558,10 @@ namespace PolyFrac
     StepReport report;
     report.coupling_iterations = 1;
     report.energy_residual =
-      energy_residual(flow.flow_step_data(t_new, time_step), u_new, p_new);
+      energy_residual(flow.flow_step_data(t_new, time_step),
+                      u_new,
+                      p_new,
+                      scales(pressure).energy);
     state    = u_new;
     pressure = p_new;
     out << "Step to t = " << t_new << ": monolithic, "

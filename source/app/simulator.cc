@@ -4,6 +4,7 @@
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
+#include <polyfrac/app/time_stepping.h>
 #include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/postprocessing/verification.h>
@@ -37,12 +38,13 @@ namespace PolyFrac
     void
     write_state(const Model<dim> &model, const double t);
 
-    /** Appends the row of step @p step to `time_series-level-K.csv` (on
-     * rank 0). */
+    /** Appends the row of step @p step, taken after @p cuts failed
+     * attempts, to `time_series-level-K.csv` (on rank 0). */
     void
     write_time_series_row(const unsigned int step,
                           const double       t,
                           const double       time_step,
+                          const unsigned int cuts,
                           const StepReport  &report,
                           const Errors      &errors,
                           const double       wall_seconds);
@@ -114,10 +116,10 @@ namespace PolyFrac
                     ExcMessage("Cannot write <" + prm.output.directory + "/" +
                                time_series_name + ">."));
         *this->time_series
-          << "step,time,time_step,coupling_iterations,newton_iterations,"
-             "n_open,n_stick,n_slip,mean_aperture,mean_fracture_pressure,"
-             "err_pressure,err_fracture_pressure,err_u,energy_residual,"
-             "wall_seconds"
+          << "step,time,time_step,cuts,coupling_iterations,"
+             "newton_iterations,n_open,n_stick,n_slip,mean_aperture,"
+             "mean_fracture_pressure,err_pressure,err_fracture_pressure,err_u,"
+             "energy_residual,wall_seconds"
           << std::endl;
       }
   }
@@ -142,8 +144,9 @@ namespace PolyFrac
   Simulator<dim>::LevelOutput::write_time_series_row(const unsigned int step,
                                                      const double       t,
                                                      const double time_step,
-                                                     const StepReport &report,
-                                                     const Errors     &errors,
+                                                     const unsigned int cuts,
+                                                     const StepReport  &report,
+                                                     const Errors      &errors,
                                                      const double wall_seconds)
   {
     // Rank 0 writes the file; the others have none (but evaluated the
@@ -161,7 +164,7 @@ namespace PolyFrac
     };
     std::ostream &out = *time_series;
     out << step << ',' << std::setprecision(12) << t << ',' << time_step
-        << std::setprecision(6);
+        << std::setprecision(6) << ',' << cuts;
     write_cell(out, report.coupling_iterations);
     write_cell(out, report.newton_iterations);
     write_cell(out, report.n_open);
@@ -395,19 +398,15 @@ namespace PolyFrac
       }
 
     // Implicit Euler from t = 0: the initial state is step 0 of the
-    // series; a failed step is halved and retried.
-    const double time_step =
-      prm.time.time_step /
-      (prm.time.refine_with_mesh ? std::pow(2., level) : 1.);
-    DiscreteTime time(0, prm.time.end_time, time_step);
+    // series; a failed step is cut and retried (TimeStepping).
+    TimeStepping stepping(prm, level);
     output_state(0);
     std::optional<unsigned int> newton_iterations;
-    unsigned int                n_cuts = 0;
-    while (!time.is_at_end())
+    while (!stepping.is_at_end())
       {
         Timer        wall;
-        const double t_old = time.get_current_time();
-        const double t_new = time.get_next_time();
+        const double t_old = stepping.current_time();
+        const double t_new = stepping.next_time();
         StepReport   report;
         {
           TimerOutput::Scope section(timer, "solve");
@@ -415,37 +414,26 @@ namespace PolyFrac
         }
         if (!report.converged)
           {
-            ++n_cuts;
-            std::ostringstream what;
-            what << "The step from t = " << t_old << " to t = " << t_new
-                 << " failed: " << report.failure;
-            AssertThrow(n_cuts <= 10,
-                        ExcMessage(what.str() +
-                                   " It failed after halving the time step "
-                                   "10 times; the last converged state, at "
-                                   "the start of this step, is in the output "
-                                   "files."));
-            out << what.str() << " Halving the time step." << std::endl;
-            time.set_desired_next_step_size(time.get_next_step_size() / 2);
+            stepping.cut(report.failure, out);
             continue;
           }
-        n_cuts = 0;
-        time.advance_time();
+        stepping.advance(report);
         if (report.newton_iterations)
           newton_iterations =
             newton_iterations.value_or(0) + *report.newton_iterations;
         {
           TimerOutput::Scope section(timer, "postprocessing");
           model.print_step_summary(out);
-          output.write_time_series_row(time.get_step_number(),
+          output.write_time_series_row(stepping.step_number(),
                                        t_new,
                                        t_new - t_old,
+                                       stepping.n_cuts_of_last_step(),
                                        report,
                                        model.errors(t_new),
                                        wall.wall_time());
         }
-        output_state(t_new);
-        time.set_desired_next_step_size(time_step);
+        if (stepping.is_output_time())
+          output_state(t_new);
       }
     return newton_iterations;
   }

@@ -863,6 +863,32 @@ namespace PolyFrac
                       Patterns::Bool(),
                       "true: each refinement level halves the time step "
                       "(space-time convergence studies).");
+    prm.declare_entry("Adaptive",
+                      "false",
+                      Patterns::Bool(),
+                      "true: after a step that converged at once and easily "
+                      "(at most half of Nonlinear solver/Maximum coupling "
+                      "iterations), the next step is 1.5 times longer, up to "
+                      "Maximum time step; a failed step is halved and the "
+                      "step grows again only after an easy one. The time "
+                      "series lists the cuts of each step.");
+    prm.declare_entry("Maximum time step",
+                      "0",
+                      Patterns::Double(0),
+                      "The longest step (s) of Adaptive steps; 0: no bound "
+                      "but End time.");
+    prm.declare_entry("Output times",
+                      "",
+                      Patterns::List(Patterns::Double(0)),
+                      "Increasing times in (0, End time] at which the state "
+                      "is written; the steps are shortened to land on them. "
+                      "Empty: the state of every step is written.");
+    prm.declare_entry("Maximum steps",
+                      "5000",
+                      Patterns::Integer(1),
+                      "The most time steps a level may take; the run stops "
+                      "with an error when it would take more (checked before "
+                      "the run for fixed steps).");
     prm.leave_subsection();
   }
 
@@ -1237,19 +1263,64 @@ namespace PolyFrac
     prm->leave_subsection();
 
     prm->enter_subsection("Time");
-    time.end_time         = prm->get_double("End time");
-    time.time_step        = prm->get_double("Time step");
-    time.refine_with_mesh = prm->get_bool("Refine time step with mesh");
+    time.end_time          = prm->get_double("End time");
+    time.time_step         = prm->get_double("Time step");
+    time.refine_with_mesh  = prm->get_bool("Refine time step with mesh");
+    time.adaptive          = prm->get_bool("Adaptive");
+    time.maximum_time_step = prm->get_double("Maximum time step");
+    time.output_times.clear();
+    for (const std::string &value :
+         Utilities::split_string_list(prm->get("Output times")))
+      time.output_times.push_back(Utilities::string_to_double(value));
+    time.max_steps = prm->get_integer("Maximum steps");
     prm->leave_subsection();
-    AssertThrow(time.end_time > 0 && time.time_step > 0,
-                ExcMessage("In <" + file_name +
-                           ">: Time/End time and Time/Time step must be > 0 "
-                           "(they are " +
-                           std::to_string(time.end_time) + " and " +
-                           std::to_string(time.time_step) + ")."));
+    check_time_steps();
 
     warn_unused_entries();
     check_expressions();
+  }
+
+
+
+  void
+  Parameters::check_time_steps() const
+  {
+    const std::string where = "In <" + file_name + ">, subsection <Time>: ";
+    AssertThrow(time.end_time > 0 && time.time_step > 0,
+                ExcMessage(where +
+                           "End time and Time step must be > 0 (they "
+                           "are " +
+                           std::to_string(time.end_time) + " and " +
+                           std::to_string(time.time_step) + ")."));
+    for (unsigned int i = 0; i < time.output_times.size(); ++i)
+      AssertThrow(time.output_times[i] > 0 &&
+                    time.output_times[i] <= time.end_time &&
+                    (i == 0 || time.output_times[i] > time.output_times[i - 1]),
+                  ExcMessage(where +
+                             "Output times must increase and lie in "
+                             "(0, End time = " +
+                             Utilities::to_string(time.end_time) + "]; entry " +
+                             std::to_string(i + 1) + " is " +
+                             Utilities::to_string(time.output_times[i]) + "."));
+    if (model != "flow" && model != "poromechanics")
+      return;
+    // Fixed steps: the finest level's count is known now (each output time
+    // may add one).
+    const unsigned int finest = n_refinement_levels - 1;
+    const double       step =
+      time.time_step / (time.refine_with_mesh ? std::pow(2., finest) : 1.);
+    const double n_steps =
+      std::ceil(time.end_time / step * (1 - 1e-12)) + time.output_times.size();
+    std::ostringstream what;
+    what << std::setprecision(6) << where << "End time = " << time.end_time
+         << " in steps of " << step;
+    if (finest > 0)
+      what << " (level " << finest << ")";
+    what << " takes " << n_steps
+         << " steps, above Maximum steps = " << time.max_steps
+         << ": lengthen Time step or raise Maximum steps.";
+    AssertThrow(time.adaptive || n_steps <= time.max_steps,
+                ExcMessage(what.str()));
   }
 
 

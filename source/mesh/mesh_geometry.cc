@@ -256,6 +256,34 @@ namespace PolyFrac
 
   template <int dim>
   double
+  MeshGeometry<dim>::domain_diameter() const
+  {
+    Point<dim> lower = mesh.vertices[0], upper = mesh.vertices[0];
+    for (const auto &x : mesh.vertices)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::min(lower[d], x[d]);
+          upper[d] = std::max(upper[d], x[d]);
+        }
+    return lower.distance(upper);
+  }
+
+
+
+  template <int dim>
+  double
+  MeshGeometry<dim>::domain_measure() const
+  {
+    double measure = 0;
+    for (const auto &cell : cells)
+      measure += cell.measure;
+    return measure;
+  }
+
+
+
+  template <int dim>
+  double
   MeshGeometry<dim>::max_diameter() const
   {
     double h = 0;

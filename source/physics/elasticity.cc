@@ -510,6 +510,36 @@ namespace PolyFrac
 
 
   template <int dim>
+  double
+  Elasticity<dim>::load_scale() const
+  {
+    const auto    &mesh     = geometry.mesh;
+    const double   diameter = geometry.domain_diameter();
+    double         scale    = 0;
+    Vector<double> value(dim);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const Point<dim> &x = geometry.cells[c].centroid;
+        scale               = std::max(scale, initial_stress_value(x).norm());
+        body_force->vector_value(x, value);
+        scale = std::max(scale, value.l2_norm() * diameter);
+      }
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      if (on_neumann_boundary(f))
+        {
+          neumann->vector_value(geometry.faces[f].centroid, value);
+          scale = std::max(scale, value.l2_norm());
+        }
+    for (const auto &ff : network.fracture_faces)
+      scale = std::max(scale,
+                       std::abs(fracture_pressure->value(
+                         geometry.faces[ff.face].centroid)));
+    return scale;
+  }
+
+
+
+  template <int dim>
   bool
   Elasticity<dim>::on_neumann_boundary(const unsigned int face) const
   {

@@ -9,10 +9,11 @@
 namespace PolyFrac
 {
   double
-  EnergyTerms::residual() const
+  EnergyTerms::residual(const double floor) const
   {
     double balance = stored_after - stored_before;
-    double scale   = std::max(std::abs(stored_after), std::abs(stored_before));
+    double scale =
+      std::max({floor, std::abs(stored_after), std::abs(stored_before)});
     for (const auto &[name, value] : dissipation)
       {
         balance += value;

@@ -346,6 +346,45 @@ CASES = {
          "value"],
         files={"scene.prm": section("Model", Model="poromechanics") + section(
             "Exact solution", Analytic_solution="mandel")}),
+    # The coupled step and the time steps.
+    "pressure_stabilisation_with_face_bubbles": case(
+        "`Flow/Pressure stabilisation = 0.25` with the face bubbles (default)",
+        ["Flow/Pressure stabilisation = 0.25 with Flow/Face bubbles = true",
+         "Set it to 0, or set Face bubbles = false"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Flow", Pressure_stabilisation="0.25")}),
+    "monolithic_with_fractures": case(
+        "`Coupling scheme = monolithic` on a fractured scene",
+        ["Nonlinear solver/Coupling scheme = monolithic is not available "
+         "with fractures yet: set it to fixed-stress or automatic"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               SEGMENT + section("Nonlinear solver",
+                                 Coupling_scheme="monolithic")},
+        stage="level"),
+    "coupling_scheme_unknown": case(
+        "`Coupling scheme = newton`",
+        ["Coupling scheme", "newton"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Nonlinear solver", Coupling_scheme="newton")}),
+    "too_many_time_steps": case(
+        "`End time = 1e300` (a run that would never end)",
+        ["subsection <Time>: End time = 1e+300 in steps of 0.1 takes 1e+301 "
+         "steps, above Maximum steps = 5000: lengthen Time step or raise "
+         "Maximum steps"],
+        files={"scene.prm": section("Model", Model="poromechanics") + section(
+            "Time", End_time="1e300")}),
+    "output_times_decreasing": case(
+        "`Output times = 0.5, 0.2`",
+        ["subsection <Time>: Output times must increase and lie in (0, End "
+         "time = 1]; entry 2 is 0.2"],
+        files={"scene.prm": section("Model", Model="flow") + section(
+            "Time", Output_times="0.5, 0.2")}),
+    "output_time_after_end": case(
+        "`Output times = 2` with End time = 1",
+        ["Output times must increase and lie in (0, End time = 1]; entry 1 "
+         "is 2"],
+        files={"scene.prm": section("Model", Model="flow") + section(
+            "Time", Output_times="2")}),
     # Fracture geometry.
     "duplicate_fractures": case(
         "the same segment given twice",

@@ -134,12 +134,14 @@ namespace PolyFrac
      * The residual of the discrete energy balance (doc/energy.md) of the
      * step from the current state to (@p u_new, @p p_new), whose last flow
      * solve used @p data; throws, listing the terms, if it exceeds its
-     * bound 10 × max(coupling tolerance, Newton tolerance).
+     * bound 10 × max(coupling tolerance, Newton tolerance), relative to
+     * the terms and to @p energy_scale (Scales::energy).
      */
     double
     energy_residual(const FlowStepData         &data,
                     const MechanicalState<dim> &u_new,
-                    const Vector<double>       &p_new);
+                    const Vector<double>       &p_new,
+                    const double                energy_scale);
 
     /** The step of the monolithic scheme (BiotSystem). */
     StepReport
@@ -149,6 +151,29 @@ namespace PolyFrac
      * does not apply (fractures, several ranks); whether it is used. */
     bool
     use_monolithic_scheme() const;
+
+    /**
+     * The floors below which a step's quantities count as round-off: a
+     * millionth of the displacement and pressure the loads can cause, and
+     * its square for energies, so that a state at rest (u and its
+     * increments at round-off) is converged at once, while any motion the
+     * loads cause stays far above them.
+     */
+    struct Scales
+    {
+      /** Displacement (m): 1e-6 σ_ref diam(Ω)/(λ + 2μ). */
+      double displacement;
+      /** Pressure (Pa): 1e-6 σ_ref. */
+      double pressure;
+      /** Energy (J, per unit length in 2D): 1e-12 σ_ref² |Ω|/(λ + 2μ). */
+      double energy;
+    };
+
+    /** The floors of the step at the time the elasticity is set to, with
+     * σ_ref the largest of Elasticity::load_scale(), |@p p| and the
+     * multipliers |λ_σ| of the state. */
+    Scales
+    scales(const Vector<double> &p) const;
 
     /** a_σ: the opening per unit fracture pressure of each face (probe). */
     std::vector<double>

@@ -358,6 +358,16 @@ namespace PolyFrac
       double time_step;
       /** Refine time step with mesh: level k uses Δt / 2^k. */
       bool refine_with_mesh;
+      /** Adaptive: grow the step after easy steps (TimeStepping). */
+      bool adaptive;
+      /** Maximum time step of adaptive steps (0: none but End time). */
+      double maximum_time_step;
+      /** Output times: the steps land on them and the state is written
+       * there (empty: every step is written), increasing, in (0, End
+       * time]. */
+      std::vector<double> output_times;
+      /** Maximum steps per level. */
+      unsigned int max_steps;
     } time; /**< The subsection Time. */
 
   private:
@@ -407,6 +417,13 @@ namespace PolyFrac
     /** Throws unless Exact solution/Analytic solution fits the scene. */
     void
     check_analytic_solution() const;
+
+    /** Throws, naming the entry, unless the subsection Time is consistent:
+     * positive End time and Time step, increasing Output times in (0, End
+     * time], and (fixed steps of a time-dependent model) no more steps on
+     * the finest level than Maximum steps. */
+    void
+    check_time_steps() const;
 
     /** Shared, so that a Parameters object can be copied and modified. */
     std::shared_ptr<ParameterHandler> prm;

@@ -142,6 +142,15 @@ namespace PolyFrac
     double
     max_diameter() const;
 
+    /** The diagonal of the bounding box of the mesh: a length scale of
+     * the domain. */
+    double
+    domain_diameter() const;
+
+    /** |Ω|: the sum of the cell measures. */
+    double
+    domain_measure() const;
+
     /** The smallest face weight ω_s^σ and the smallest cell weight ω_s^K
      * (negative on polytopes too far from star-shaped). */
     std::pair<double, double>

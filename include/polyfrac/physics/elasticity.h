@@ -144,6 +144,16 @@ namespace PolyFrac
     Tensor<1, dim>
     in_situ_traction(const unsigned int i) const;
 
+    /**
+     * The stress scale of the loads at the time of set_time() (Pa): the
+     * largest of |σ0(x̄_K)| over the cells, |g_N(x̄_σ)| over the Neumann
+     * faces, |p_f(x̄_σ)| (Fractures/Pressure) over the fracture faces and
+     * |f(x̄_K)| diam(Ω). Stopping tests and the energy balance measure
+     * round-off against it, so that a state at rest is converged at once.
+     */
+    double
+    load_scale() const;
+
     /** The Dirichlet constraints of the node sides (values g_D). */
     void
     make_constraints();

@@ -44,10 +44,12 @@ namespace PolyFrac
     /** The terms of W^n (loads, reactions, sources, boundary data). */
     std::vector<std::pair<std::string, double>> work;
 
-    /** (E^n − E^{n−1} + D^n − W^n)/S^n, S^n the largest of E^{n−1}, E^n
-     * and the magnitudes of the terms; 0 if S^n = 0 (nothing happens). */
+    /** (E^n − E^{n−1} + D^n − W^n)/S^n, S^n the largest of E^{n−1}, E^n,
+     * the magnitudes of the terms and @p floor (an energy scale of the
+     * loads, so that the round-off of a state at rest is not measured
+     * against itself); 0 if S^n = 0 (nothing happens). */
     double
-    residual() const;
+    residual(const double floor = 0) const;
   };
 
   /**
@@ -65,7 +67,7 @@ namespace PolyFrac
    *                                    elasticity);
    *   elasticity.set_time(t_new);     // the load of step n
    *   const double r = balance.terms(before, after, p_before, p_after,
-   *                                  data, true).residual();
+   *                                  data, true).residual(floor);
    * @endcode
    */
   template <int dim>

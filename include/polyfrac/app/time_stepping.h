@@ -1,0 +1,120 @@
+#ifndef polyfrac_app_time_stepping_h
+#define polyfrac_app_time_stepping_h
+
+#include <deal.II/base/discrete_time.h>
+
+#include <polyfrac/app/model.h>
+#include <polyfrac/base/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The time steps of one level of a time-dependent scene (subsection
+   * Time), on deal.II's DiscreteTime from 0 to End time:
+   *
+   * - the step is Time step (halved per level with Refine time step with
+   *   mesh); a step whose solve fails is cut in half and retried, at most
+   *   10 times in a row;
+   * - with Adaptive = true, the step grows by the factor 1.5 after an easy
+   *   step (converged at the first attempt, in at most half of Maximum
+   *   coupling iterations when the model reports them), up to Maximum time
+   *   step, and a cut step grows again only after an easy one;
+   * - every step lands on each of the Output times (and on End time), at
+   *   which the state is written; without Output times every step is;
+   * - at most Maximum steps steps are taken: then the run stops with a
+   *   message naming the entry and the time reached.
+   *
+   * @code
+   *   TimeStepping stepping(prm, level);
+   *   while (!stepping.is_at_end())
+   *     {
+   *       const StepReport report =
+   *         model.step(stepping.current_time(), stepping.next_time(), out);
+   *       if (!report.converged)
+   *         stepping.cut(report.failure, out);
+   *       else
+   *         stepping.advance(report);
+   *     }
+   * @endcode
+   */
+  class TimeStepping
+  {
+  public:
+    /** The steps of level @p level of the scene @p prm. */
+    TimeStepping(const Parameters &prm, const unsigned int level);
+
+    /** Whether End time is reached. */
+    bool
+    is_at_end() const
+    {
+      return time.is_at_end();
+    }
+
+    /** t^{n−1}: the start of the next step. */
+    double
+    current_time() const
+    {
+      return time.get_current_time();
+    }
+
+    /** t^n: the end of the next step. */
+    double
+    next_time() const
+    {
+      return time.get_next_time();
+    }
+
+    /** The number of steps taken. */
+    unsigned int
+    step_number() const
+    {
+      return time.get_step_number();
+    }
+
+    /** Halves the next step after a failed one (whose @p failure is
+     * printed to @p out); throws after 10 cuts in a row. */
+    void
+    cut(const std::string &failure, std::ostream &out);
+
+    /** Accepts the step just solved, whose report is @p report, and
+     * chooses the next; throws at Maximum steps. */
+    void
+    advance(const StepReport &report);
+
+    /** The cuts before the step just accepted (0: taken as planned). */
+    unsigned int
+    n_cuts_of_last_step() const
+    {
+      return cuts_of_last_step;
+    }
+
+    /** Whether the state at the current time is to be written (an Output
+     * time, End time, or every step without Output times). */
+    bool
+    is_output_time() const;
+
+  private:
+    /** The step length wanted next: the planned one, clipped to land on
+     * the next output time. */
+    void
+    plan_next_step();
+
+    const Parameters::TimeData &data;
+    /** The coupling iterations above which a step is not easy. */
+    const unsigned int easy_iterations;
+    /** Time step of the level. */
+    const double nominal_step;
+    DiscreteTime time;
+    /** The step length the control wants (before landing). */
+    double       planned_step;
+    unsigned int cuts_in_a_row     = 0;
+    unsigned int cuts_of_last_step = 0;
+  };
+} // namespace PolyFrac
+
+#endif

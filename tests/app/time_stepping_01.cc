@@ -1,0 +1,177 @@
+// TimeStepping (subsection Time) on reports made up by the test, no model:
+// - fixed steps of 0.3 to End time 1 with Output times 0.5: the steps land
+//   on 0.5 (0.3, 0.5, 0.8, 1), the state is written at 0.5 and 1 only;
+// - a failed step is halved, the next fixed step is the nominal one again,
+//   and the cut is reported with the step;
+// - Adaptive: after easy steps (coupling iterations at most half of their
+//   maximum) the step grows by 1.5 up to Maximum time step; a hard step
+//   keeps it; a cut one halves it and it grows again only after an easy
+//   step;
+// - Maximum steps: the step that would exceed it throws, naming the entry.
+// Each property is checked here (AssertThrow); the output lists the steps.
+
+#include <polyfrac/app/time_stepping.h>
+
+#include "../tests.h"
+
+using namespace PolyFrac;
+
+namespace
+{
+  /** A converged step with @p iterations coupling iterations. */
+  StepReport
+  converged(const unsigned int iterations)
+  {
+    StepReport report;
+    report.coupling_iterations = iterations;
+    return report;
+  }
+
+  /** Whether @p a and @p b agree to round-off. */
+  bool
+  same(const double a, const double b)
+  {
+    return std::abs(a - b) <= 1e-12 * std::max(1., std::abs(b));
+  }
+
+  void
+  check(const bool condition, const std::string &what)
+  {
+    AssertThrow(condition, ExcMessage(what));
+  }
+
+
+
+  void
+  fixed_steps_land_on_output_times()
+  {
+    Parameters prm        = Testing::default_parameters(2, 2);
+    prm.time.end_time     = 1;
+    prm.time.time_step    = 0.3;
+    prm.time.output_times = {0.5};
+    TimeStepping        steps(prm, 0);
+    std::vector<double> times, written;
+    while (!steps.is_at_end())
+      {
+        steps.advance(converged(3));
+        times.push_back(steps.current_time());
+        if (steps.is_output_time())
+          written.push_back(steps.current_time());
+      }
+    std::cout << "Fixed steps:";
+    for (const double t : times)
+      std::cout << ' ' << t;
+    std::cout << "; written at";
+    for (const double t : written)
+      std::cout << ' ' << t;
+    std::cout << std::endl;
+    check(times.size() == 4 && same(times[0], 0.3) && same(times[1], 0.5) &&
+            same(times[2], 0.8) && same(times[3], 1),
+          "fixed steps do not land on the output time");
+    check(written.size() == 2 && same(written[0], 0.5) && same(written[1], 1),
+          "the state is written at other times than 0.5 and 1");
+  }
+
+
+
+  void
+  cut_then_nominal_step()
+  {
+    Parameters prm     = Testing::default_parameters(2, 2);
+    prm.time.end_time  = 1;
+    prm.time.time_step = 0.4;
+    TimeStepping       steps(prm, 0);
+    std::ostringstream log;
+    steps.cut("made up", log);
+    check(same(steps.next_time(), 0.2), "a cut does not halve the step");
+    steps.advance(converged(3));
+    check(steps.n_cuts_of_last_step() == 1, "the cut is not reported");
+    check(same(steps.next_time(), 0.6),
+          "after a cut, fixed steps do not return to the nominal step");
+    steps.advance(converged(3));
+    check(steps.n_cuts_of_last_step() == 0, "a cut is reported twice");
+    std::cout << "Cut: 0 -> 0.2 (1 cut), then 0.2 -> 0.6" << std::endl;
+  }
+
+
+
+  void
+  adaptive_steps()
+  {
+    Parameters prm                        = Testing::default_parameters(2, 2);
+    prm.time.end_time                     = 100;
+    prm.time.time_step                    = 1;
+    prm.time.adaptive                     = true;
+    prm.time.maximum_time_step            = 4;
+    prm.nonlinear.max_coupling_iterations = 20;
+    TimeStepping        steps(prm, 0);
+    std::ostringstream  log;
+    std::vector<double> lengths;
+    const auto          take = [&](const unsigned int iterations) {
+      const double length = steps.next_time() - steps.current_time();
+      steps.advance(converged(iterations));
+      lengths.push_back(length);
+    };
+    take(10); // easy (10 <= 20/2): 1 -> 1.5
+    take(11); // hard: keeps 1.5
+    take(2);  // easy: 1.5 -> 2.25
+    steps.cut("made up", log);
+    take(2); // the cut step, 1.125, then no growth
+    take(2); // easy: grows again, 1.6875
+    take(2);
+    take(2);
+    take(2); // up to Maximum time step 4
+    std::cout << "Adaptive step lengths:";
+    for (const double length : lengths)
+      std::cout << ' ' << length;
+    std::cout << std::endl;
+    const std::vector<double> expected = {
+      1, 1.5, 1.5, 1.125, 1.125, 1.6875, 2.53125, 3.796875};
+    for (unsigned int i = 0; i < expected.size(); ++i)
+      check(same(lengths[i], expected[i]),
+            "adaptive step " + std::to_string(i + 1) + " is " +
+              std::to_string(lengths[i]) + ", expected " +
+              std::to_string(expected[i]));
+    check(same(steps.next_time() - steps.current_time(), 4),
+          "Maximum time step does not bound the growth");
+  }
+
+
+
+  void
+  maximum_steps()
+  {
+    Parameters prm                        = Testing::default_parameters(2, 2);
+    prm.time.end_time                     = 1;
+    prm.time.time_step                    = 0.1;
+    prm.time.adaptive                     = true; // not checked before the run
+    prm.time.max_steps                    = 3;
+    prm.nonlinear.max_coupling_iterations = 2; // no step is easy
+    TimeStepping steps(prm, 0);
+    std::string  message;
+    try
+      {
+        while (!steps.is_at_end())
+          steps.advance(converged(2));
+      }
+    catch (const ExceptionBase &e)
+      {
+        message = e.get_exc_name() + std::string(e.what());
+      }
+    check(message.find("Time/Maximum steps = 3 reached at t = 0.3") !=
+            std::string::npos,
+          "Maximum steps does not stop the run with its message: " + message);
+    std::cout << "Maximum steps: stopped at t = 0.3" << std::endl;
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  fixed_steps_land_on_output_times();
+  cut_then_nominal_step();
+  adaptive_steps();
+  maximum_steps();
+}
