@@ -349,7 +349,8 @@ namespace PolyFrac
           time_step;
       }
 
-    // Fracture faces: |σ| [(d^k − d^{n−1}) + a_σ (p_f − p_f^k)] / Δt
+    // Fracture faces: |σ| [(d^k − d^{n−1}) + a_σ (p_f − p_f^k)
+    //                    + d^k c_f (p_f − p_f^{n−1})] / Δt
     //                 + fluxes − exchange = |σ| h_f.
     const std::vector<double> d_k  = apertures(u_k);
     const std::vector<double> d_0  = apertures(start);
@@ -364,7 +365,7 @@ namespace PolyFrac
                              u_k.contact.normal[i] == NormalState::open ?
                                      fracture_relaxation[i] :
                                      0.;
-        data.fracture_storage[i] = a;
+        data.fracture_storage[i] = a + flow.fracture_fluid_storage(d_k[i]);
         data.fracture_rhs[i] =
           (a * (pf_k[i] - pf_0[i]) - (d_k[i] - d_0[i])) / time_step;
       }

@@ -674,6 +674,15 @@ namespace PolyFrac
                       "the oscillations of the nodal pair but changes the "
                       "answers (tight rock: it dominates the permeability); "
                       "0: none.");
+    prm.declare_entry(
+      "Fracture compressibility",
+      "4.5e-10",
+      Patterns::Double(),
+      "c_f >= 0 (1/Pa): the fluid in a fracture face of aperture d_f stores "
+      "max(d_f, d_min) c_f per unit pressure and area, so that the fracture "
+      "mass balance gains max(d_f, d_min) c_f dp_f/dt (default: water); a "
+      "closed fracture in an impermeable matrix is then well posed. 0: "
+      "incompressible.");
     prm.declare_entry("Fracture normal transmissibility",
                       "1e-9",
                       Patterns::Double(),
@@ -1367,6 +1376,8 @@ namespace PolyFrac
                            "make the pair stable, and the stabilisation would "
                            "only change the answers. Set it to 0, or set "
                            "Face bubbles = false."));
+    flow.fracture_compressibility =
+      bounded("Fracture compressibility", 0, infinity, false, ">= 0 (1/Pa)");
     flow.normal_transmissibility = bounded("Fracture normal transmissibility",
                                            0,
                                            infinity,
@@ -1646,6 +1657,7 @@ namespace PolyFrac
                                         "Fracture aperture at contact",
                                         "Minimum fracture aperture",
                                         "Fracture normal transmissibility",
+                                        "Fracture compressibility",
                                         "Matrix source",
                                         "Fracture source",
                                         "Pressure boundary ids",

@@ -201,7 +201,26 @@ namespace PolyFrac
            entry != constrained_matrix.end(i);
            ++entry)
         entry->value() *= scaling(i) * scaling(entry->column());
-    direct.initialize(constrained_matrix);
+    try
+      {
+        direct.initialize(constrained_matrix);
+      }
+    catch (const std::exception &)
+      {
+        AssertThrow(false,
+                    ExcMessage(
+                      "The poromechanical system (" +
+                      std::string(unknowns == Unknowns::all ?
+                                    "displacement, face bubbles, pressures" :
+                                    "face bubbles, pressures") +
+                      ") is singular: some pressures are determined by "
+                      "nothing, e.g. a fracture whose faces are all in "
+                      "contact in an impermeable matrix without a pressure "
+                      "boundary and with Flow/Fracture compressibility = 0, "
+                      "or cells without permeability and storage. Set "
+                      "Flow/Fracture compressibility or Inverse Biot modulus "
+                      "> 0, or a Pressure boundary."));
+      }
     ++factorisations;
   }
 

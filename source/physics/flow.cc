@@ -126,7 +126,9 @@ namespace PolyFrac
     data.time_step = time_step;
     data.storage.assign(geometry.mesh.n_cells(), prm.flow.inverse_biot_modulus);
     data.cell_rhs.assign(geometry.mesh.n_cells(), 0.);
-    data.fracture_storage.assign(network.n_fracture_faces(), 0.);
+    data.fracture_storage.assign(network.n_fracture_faces(),
+                                 fracture_fluid_storage(
+                                   prm.flow.aperture_at_contact));
     data.fracture_rhs.assign(network.n_fracture_faces(), 0.);
     data.apertures.assign(network.n_fracture_faces(),
                           prm.flow.aperture_at_contact);
@@ -163,6 +165,16 @@ namespace PolyFrac
     for (unsigned int e = 0; e < edges.n_edges(); ++e)
       p(dofs.edge_dof(e)) = initial.value(edges.edges[e].centroid);
     return p;
+  }
+
+
+
+  template <int dim>
+  double
+  Flow<dim>::fracture_fluid_storage(const double aperture) const
+  {
+    return std::max(aperture, prm.flow.minimum_aperture) *
+           prm.flow.fracture_compressibility;
   }
 
 

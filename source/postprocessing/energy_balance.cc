@@ -265,6 +265,14 @@ namespace PolyFrac
         const double measure = geometry.faces[ff.face].measure;
         const double p_f     = p_after(pressure_dofs.fracture_face_dof(i));
         sources += dt * measure * h_f[i] * p_f;
+        // The fluid storage d c_f of the step's aperture (the fixed-stress
+        // relaxation in data.fracture_storage vanishes at convergence).
+        const double c =
+          measure * flow.fracture_fluid_storage(data.apertures[i]);
+        const double p0 = p_before(pressure_dofs.fracture_face_dof(i));
+        terms.stored_before += 0.5 * c * p0 * p0;
+        terms.stored_after += 0.5 * c * p_f * p_f;
+        storage_dissipation += 0.5 * c * (p_f - p0) * (p_f - p0);
         for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
           if (flow.mobility(cell) > 0)
             {

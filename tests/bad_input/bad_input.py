@@ -366,6 +366,23 @@ CASES = {
         ["Coupling scheme", "newton"],
         files={"scene.prm": section("Model", Model="poromechanics") + section(
             "Nonlinear solver", Coupling_scheme="newton")}),
+    "closed_fracture_impermeable_incompressible": case(
+        "a closed fracture in an impermeable matrix with Fracture "
+        "compressibility = 0",
+        ["is singular: some pressures are determined by nothing",
+         "Set Flow/Fracture compressibility or Inverse Biot modulus > 0"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               SEGMENT + section("Flow", Permeability="0",
+                                 Inverse_Biot_modulus="0",
+                                 Fracture_compressibility="0",
+                                 Fracture_source="1e-6") + section(
+                   "Boundary conditions", Dirichlet_boundary_ids="2",
+                   Neumann_boundary_ids="0, 1, 3",
+                   Neumann_traction="0; y > 0.99 ? -1e6 : 0") +
+               # The initial state (t = 0) is written before the first
+               # step by design: the failing step is the subject here.
+               section("Output", Write_VTU="false")},
+        stage="level"),
     "too_many_time_steps": case(
         "`End time = 1e300` (a run that would never end)",
         ["subsection <Time>: End time = 1e+300 in steps of 0.1 takes 1e+301 "

@@ -268,6 +268,9 @@ namespace PolyFrac
       /** Pressure stabilisation δ ≥ 0 of the pair without face bubbles: the
        * mobility δ b² h_K²/((λ+2μ) Δt) of the pressure increment (0: none). */
       double pressure_stabilisation;
+      /** Fracture compressibility c_f ≥ 0 (1/Pa): the fracture mass
+       * balance stores max(d_f, d_min) c_f ∂_t p_f. */
+      double fracture_compressibility;
       /** Fracture normal transmissibility Λ_f ≥ 0. */
       double normal_transmissibility;
       /** Matrix source h_m, an expression. */

@@ -25,10 +25,12 @@ namespace PolyFrac
   /**
    * The coefficients of one implicit Euler step t^{n−1} → t^n of Flow that
    * the model chooses, one entry per cell or per fracture face:
-   * - Model = flow: c_K = 1/M (Flow/Inverse Biot modulus), a_σ = 0, r = 0
-   *   and the aperture d_0 (Flow::flow_step_data());
+   * - Model = flow: c_K = 1/M (Flow/Inverse Biot modulus), a_σ = the fluid
+   *   storage max(d_0, d_min) c_f, r = 0 and the aperture d_0
+   *   (Flow::flow_step_data());
    * - fixed-stress poromechanics: c_K = 1/M + L, r_K = −b div_K(u^k −
-   *   u^{n−1})/Δt + L p_K^k/Δt, a_σ = the fracture relaxation, r_σ = −(d^k −
+   *   u^{n−1})/Δt + L p_K^k/Δt, a_σ = the fracture relaxation plus the
+   *   fluid storage max(d^k, d_min) c_f, r_σ = −(d^k −
    *   d^{n−1})/Δt, d_σ = d_0 − [[u^k]]_{σ,n}.
    */
   struct FlowStepData
@@ -114,7 +116,8 @@ namespace PolyFrac
          const PressureDoFMap<dim>  &dofs);
 
     /** The step data of Model = flow at @p time with step @p time_step:
-     * c_K = 1/M, a_σ = 0, no extra sources, apertures d_0. */
+     * c_K = 1/M, a_σ = max(d_0, d_min) c_f, no extra sources, apertures
+     * d_0. */
     FlowStepData
     flow_step_data(const double time, const double time_step) const;
 
@@ -188,6 +191,12 @@ namespace PolyFrac
     /** h_f(x̄_σ, @p time) per fracture face (Flow/Fracture source). */
     std::vector<double>
     fracture_sources(const double time) const;
+
+    /** max(d, d_min) c_f: the fluid storage of a fracture face of aperture
+     * @p aperture per unit pressure and area (Flow/Fracture
+     * compressibility). */
+    double
+    fracture_fluid_storage(const double aperture) const;
 
     /** C_σ/η = max(d, d_min)³/(12 η), the fracture conductivity. */
     double
