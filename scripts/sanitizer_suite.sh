@@ -20,6 +20,13 @@ long_tests=(
   polyfrac/b5_closed_crack # 308 s (Release 5 s)
   polyfrac/b4_mandel # 252 s (Release 11 s; b4_terzaghi stays, 14 s)
   polyfrac/flow_2d_network_agglomerated_simplices # 179 s (AMG path)
+  # Added 2026-11-26, Release 2-3 s each (Mandel on two levels, twice);
+  # their code paths (BiotSystem, FaceBubbles, MINRES) stay in the Debug
+  # suite through b4_terzaghi, poromechanics_2d_slip and step-3.
+  polyfrac/equal_runs_biot_fixed_stress
+  polyfrac/equal_runs_biot_minres
+  # Release 15 s (dense eigenvalues of 512 x 512 Schur complements).
+  physics/face_bubbles_01
   # Two runs each of B1 and B2-3D with Coulomb friction (direct and GMRES);
   # the GMRES step itself is checked in Debug by contact/face_condensation_01.
   polyfrac/equal_runs_coulomb_amg_2d

@@ -1,4 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/linear_operator.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_minres.h>
 
 #include <polyfrac/physics/biot_system.h>
 
@@ -26,6 +29,8 @@ namespace PolyFrac
     , n_u(unknowns == Unknowns::all ? dofs.n_displacement_dofs() : 0)
     , n_s(bubbles.n_bubbles())
     , n_p(pressure_dofs.n_dofs())
+    , iterative(unknowns == Unknowns::bubbles_and_pressures &&
+                prm.solver.method != "direct")
   {
     AssertThrow(!dofs.is_distributed(),
                 ExcMessage("In <" + prm.file_name +
@@ -201,6 +206,12 @@ namespace PolyFrac
            entry != constrained_matrix.end(i);
            ++entry)
         entry->value() *= scaling(i) * scaling(entry->column());
+    if (iterative)
+      {
+        make_schur_preconditioner();
+        ++factorisations;
+        return;
+      }
     try
       {
         direct.initialize(constrained_matrix);
@@ -227,8 +238,99 @@ namespace PolyFrac
 
 
   template <int dim>
+  void
+  BiotSystem<dim>::minres_solve(const Vector<double> &rhs, Vector<double> &x)
+  {
+    // diag(I, AMG(Ŝ)⁻¹): symmetric positive definite, as MINRES needs.
+    const auto preconditioner = [this](Vector<double>       &dst,
+                                       const Vector<double> &src) {
+      dst = src;
+      Vector<double> p(n_p), q(n_p);
+      for (types::global_dof_index i = 0; i < n_p; ++i)
+        p(i) = src(n_s + i);
+      schur_amg.vmult(q, p);
+      for (types::global_dof_index i = 0; i < n_p; ++i)
+        dst(n_s + i) = q(i);
+    };
+    const auto operator_ = linear_operator<Vector<double>>(constrained_matrix);
+    auto       inverse   = linear_operator<Vector<double>>(constrained_matrix);
+    inverse.vmult        = preconditioner;
+    SolverControl                control(prm.solver.max_iterations,
+                          prm.solver.tolerance * rhs.l2_norm());
+    SolverMinRes<Vector<double>> minres(control);
+    try
+      {
+        minres.solve(operator_, x, rhs, inverse);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        AssertThrow(false,
+                    ExcMessage("The fixed-stress flow step (face bubbles, "
+                               "pressures): MINRES with the block "
+                               "preconditioner did not reach Linear "
+                               "solver/Tolerance in " +
+                               std::to_string(control.last_step()) +
+                               " iterations; raise Maximum iterations or use "
+                               "Method = direct."));
+      }
+    minres_iterations += control.last_step();
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::make_schur_preconditioner()
+  {
+    // The pressure rows of the scaled matrix: −C̃ on the pressures, B̃ on
+    // the bubbles (n_u = 0 here: bubbles first, then pressures).
+    const types::global_dof_index offset = n_s;
+    DynamicSparsityPattern        pattern(n_p);
+    for (types::global_dof_index i = 0; i < n_p; ++i)
+      for (auto entry = constrained_matrix.begin(offset + i);
+           entry != constrained_matrix.end(offset + i);
+           ++entry)
+        if (entry->column() >= offset)
+          pattern.add(i, entry->column() - offset);
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+      coupling(n_s);
+    for (types::global_dof_index j = 0; j < n_s; ++j)
+      for (auto entry = constrained_matrix.begin(j);
+           entry != constrained_matrix.end(j);
+           ++entry)
+        if (entry->column() >= offset && entry->value() != 0)
+          coupling[j].emplace_back(entry->column() - offset, entry->value());
+    for (const auto &column : coupling)
+      for (const auto &[a, unused_a] : column)
+        for (const auto &[b, unused_b] : column)
+          pattern.add(a, b);
+    SparsityPattern sparsity_hat;
+    sparsity_hat.copy_from(pattern);
+    SparseMatrix<double> hat(sparsity_hat);
+    for (types::global_dof_index i = 0; i < n_p; ++i)
+      for (auto entry = constrained_matrix.begin(offset + i);
+           entry != constrained_matrix.end(offset + i);
+           ++entry)
+        if (entry->column() >= offset)
+          hat.add(i, entry->column() - offset, -entry->value());
+    for (const auto &column : coupling)
+      for (const auto &[a, value_a] : column)
+        for (const auto &[b, value_b] : column)
+          hat.add(a, b, value_a * value_b);
+    // No drop tolerance: the scaled entries are of order one, but keep
+    // every one (Flow's reason).
+    schur.reinit(hat, 0.);
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.aggregation_threshold = 0.1;
+    schur_amg.initialize(schur, data);
+  }
+
+
+
+  template <int dim>
   Vector<double>
-  BiotSystem<dim>::solve(Vector<double> &rhs) const
+  BiotSystem<dim>::solve(Vector<double> &rhs)
   {
     // Lifting: x = x_0 + x_g, K_c x_0 = r − K x_g on the free unknowns.
     Vector<double> lifted(n_dofs()), correction(n_dofs()), x(n_dofs());
@@ -239,7 +341,10 @@ namespace PolyFrac
     for (const auto &line : constraints.get_lines())
       rhs(line.index) = 0;
     rhs.scale(scaling);
-    direct.vmult(x, rhs);
+    if (iterative)
+      minres_solve(rhs, x);
+    else
+      direct.vmult(x, rhs);
     x.scale(scaling);
     x += lifted;
     return x;

@@ -4,6 +4,8 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
@@ -54,7 +56,12 @@ namespace PolyFrac
    * Unknowns::all the matrix depends on Δt only: its UMFPACK factorisation
    * is made once and reused by every step of the same Δt. The fixed-stress
    * half is factorised at every call (its apertures and fracture storage
-   * change).
+   * change), or, with Linear solver/Method = AMG, solved by MINRES with
+   * the block-diagonal preconditioner diag(I, AMG(Ŝ)) of the scaled
+   * system [Ã, B̃ᵀ; B̃, −C̃] (unit diagonals), Ŝ = C̃ + B̃ B̃ᵀ the Schur
+   * complement with Ã replaced by its diagonal I (the bubbles' stiffness
+   * is local and well conditioned; B̃ B̃ᵀ couples the two cells of each
+   * bubble's face).
    *
    * @code
    *   BiotSystem<dim> system(prm, dofs, pressure_dofs, flow, coupling,
@@ -121,11 +128,18 @@ namespace PolyFrac
       return n_u + n_s + n_p;
     }
 
-    /** Number of factorisations made so far. */
+    /** Number of factorisations (or preconditioner set-ups) so far. */
     unsigned int
     n_factorisations() const
     {
       return factorisations;
+    }
+
+    /** MINRES iterations so far (Method = AMG, fixed-stress half). */
+    unsigned int
+    n_minres_iterations() const
+    {
+      return minres_iterations;
     }
 
   private:
@@ -147,13 +161,22 @@ namespace PolyFrac
                            const Vector<double> &p_before,
                            Vector<double>       &flow_rhs);
 
-    /** The constrained copy of #matrix, factorised. */
+    /** The constrained copy of #matrix, scaled, factorised (or, iterative,
+     * Ŝ and its AMG made). */
     void
     factorise();
 
+    /** MINRES on the scaled system S K_c S @p x = @p rhs (iterative). */
+    void
+    minres_solve(const Vector<double> &rhs, Vector<double> &x);
+
+    /** Ŝ = C̃ + B̃ B̃ᵀ of the scaled constrained matrix, and its AMG. */
+    void
+    make_schur_preconditioner();
+
     /** Solves K x = @p rhs with the prescribed values of #constraints. */
     Vector<double>
-    solve(Vector<double> &rhs) const;
+    solve(Vector<double> &rhs);
 
     /** Adds the pressure rows' right-hand side −Δt h − b D_s s^{n−1} to
      * @p rhs. */
@@ -187,6 +210,13 @@ namespace PolyFrac
     SparsityPattern      flow_sparsity;
     SparseMatrix<double> flow_matrix;
     SparseDirectUMFPACK  direct;
+    /** Whether the fixed-stress half is solved by MINRES (Method = AMG). */
+    const bool iterative;
+    /** Ŝ of the preconditioner and its AMG (iterative). */
+    TrilinosWrappers::SparseMatrix    schur;
+    TrilinosWrappers::PreconditionAMG schur_amg;
+    /** MINRES iterations so far (iterative). */
+    unsigned int minres_iterations = 0;
     /** Δt of the factorisation of Unknowns::all (0: none yet). */
     double       factorised_step = 0;
     unsigned int factorisations  = 0;
