@@ -27,6 +27,11 @@ long_tests=(
   polyfrac/equal_runs_biot_minres
   # Release 15 s (dense eigenvalues of 512 x 512 Schur complements).
   physics/face_bubbles_01
+  # Debug + sanitizer wall times of 2026-11-26 (2 cores, ctest -j2): the
+  # fixed-stress iteration with the face bubbles, paths that
+  # poromechanics_2d_slip (69 s) keeps in the Debug suite.
+  polyfrac/poromechanics_impermeable # 108 s (Release 1.7 s)
+  examples/step-3 # 122 s (Release 5 s; the slip scene twice)
   # Two runs each of B1 and B2-3D with Coulomb friction (direct and GMRES);
   # the GMRES step itself is checked in Debug by contact/face_condensation_01.
   polyfrac/equal_runs_coulomb_amg_2d
