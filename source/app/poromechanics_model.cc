@@ -96,6 +96,7 @@ namespace PolyFrac
       use_analytic_solution();
     elasticity.set_time(0);
     elasticity.assemble();
+    monolithic = use_monolithic_scheme();
     if (prm.flow.face_bubbles)
       {
         bubbles = std::make_unique<FaceBubbles<dim>>(*discretization.geometry,
@@ -111,13 +112,12 @@ namespace PolyFrac
                                             coupling,
                                             elasticity,
                                             *bubbles,
-                                            use_monolithic_scheme() ?
+                                            monolithic ?
                                               Unknowns::all :
                                               Unknowns::bubbles_and_pressures);
         energy_balance.use_face_bubbles(*bubbles);
         state.face_bubbles.reinit(bubbles->n_bubbles());
       }
-    monolithic            = use_monolithic_scheme();
     initial_cell_pressure = flow.cell_pressures(pressure);
     initial_volume        = coupling.volume_changes(state.displacement);
     if (discretization.network->n_fracture_faces() > 0)
