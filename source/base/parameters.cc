@@ -1671,6 +1671,15 @@ namespace PolyFrac
         warn_if_set("Exact solution", "Matrix pressure");
         warn_if_set("Exact solution", "Fracture pressure");
       }
+    if (model != "flow" && model != "poromechanics")
+      for (const std::string entry : {"End time",
+                                      "Time step",
+                                      "Refine time step with mesh",
+                                      "Adaptive",
+                                      "Maximum time step",
+                                      "Output times",
+                                      "Maximum steps"})
+        warn_if_set("Time", entry, "a static Model = " + model);
     if (model != "poromechanics")
       for (const std::string entry : {"Coupling tolerance",
                                       "Maximum coupling iterations",

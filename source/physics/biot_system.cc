@@ -371,6 +371,20 @@ namespace PolyFrac
 
 
   template <int dim>
+  const Vector<double> &
+  BiotSystem<dim>::loads_at(const double time)
+  {
+    if (time != loads_time)
+      {
+        bubble_loads = bubbles.loads();
+        loads_time   = time;
+      }
+    return bubble_loads;
+  }
+
+
+
+  template <int dim>
   void
   BiotSystem<dim>::step(const double                time,
                         const double                time_step,
@@ -392,7 +406,7 @@ namespace PolyFrac
 
     Vector<double> rhs(n_dofs());
     elasticity.assemble_load(rhs);
-    const Vector<double> s_load = bubbles.loads();
+    const Vector<double> &s_load = loads_at(data.time);
     for (unsigned int j = 0; j < n_s; ++j)
       rhs(n_u + j) = s_load(j);
     add_mass_rhs(data, flow_rhs, before, rhs);
@@ -435,7 +449,7 @@ namespace PolyFrac
     // F_s − A_su u^k: the bubbles' part of the product at s = 0.
     Vector<double> rhs(n_dofs()), unused(u_k.displacement.size()), As;
     bubbles.vmult(u_k.displacement, Vector<double>(n_s), unused, As);
-    Vector<double> s_load = bubbles.loads();
+    Vector<double> s_load = loads_at(data.time);
     s_load -= As;
     for (unsigned int j = 0; j < n_s; ++j)
       rhs(j) = s_load(j);

@@ -17,6 +17,7 @@
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -166,6 +167,11 @@ namespace PolyFrac
     void
     factorise();
 
+    /** FaceBubbles::loads() at @p time (the elasticity's time), computed
+     * once per time. */
+    const Vector<double> &
+    loads_at(const double time);
+
     /** MINRES on the scaled system S K_c S @p x = @p rhs (iterative). */
     void
     minres_solve(const Vector<double> &rhs, Vector<double> &x);
@@ -210,6 +216,10 @@ namespace PolyFrac
     SparsityPattern      flow_sparsity;
     SparseMatrix<double> flow_matrix;
     SparseDirectUMFPACK  direct;
+    /** FaceBubbles::loads() at the time #loads_time (each coupling
+     * iteration of a step asks for the same). */
+    Vector<double> bubble_loads;
+    double         loads_time = std::numeric_limits<double>::quiet_NaN();
     /** Whether the fixed-stress half is solved by MINRES (Method = AMG). */
     const bool iterative;
     /** Ŝ of the preconditioner and its AMG (iterative). */
