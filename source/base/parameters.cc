@@ -423,7 +423,11 @@ namespace PolyFrac
     prm.declare_entry("Pressure",
                       "0",
                       Patterns::Anything(),
-                      "Fracture pressure p_f (expression in x, y[, z], t).");
+                      "Fracture pressure p_f (expression in x, y[, z], t), a "
+                      "load on the fracture faces of Model = elasticity or "
+                      "contact mechanics. Refused under flow and "
+                      "poromechanics, where p_f is an unknown whose initial "
+                      "value is Flow/Initial pressure.");
     prm.declare_entry("Traction",
                       zero_vector(dim),
                       Patterns::Anything(),
@@ -1099,6 +1103,15 @@ namespace PolyFrac
          Utilities::split_string_list(prm->get("Gmsh physical tags")))
       fractures.gmsh_physical_tags.push_back(Utilities::string_to_int(s));
     fractures.pressure = prm->get("Pressure");
+    AssertThrow((model != "flow" && model != "poromechanics") ||
+                  fractures.pressure == "0",
+                ExcMessage(fwhere + ": <Pressure> = " + fractures.pressure +
+                           " with Model = " + model +
+                           ": there the fracture pressure is an unknown of "
+                           "the flow, not a load. Give its initial value in "
+                           "Flow/Initial pressure (an expression in x, which "
+                           "sets matrix and fracture pressures), and remove "
+                           "Fractures/Pressure."));
     fractures.traction =
       checked_vector_expression("Fractures/Traction", prm->get("Traction"));
     prm->leave_subsection();

@@ -353,6 +353,13 @@ CASES = {
          "Set it to 0, or set Face bubbles = false"],
         files={"scene.prm": section("Model", Model="poromechanics") + section(
             "Flow", Pressure_stabilisation="0.25")}),
+    "fracture_pressure_under_poromechanics": case(
+        "`Fractures/Pressure = 1e6` under Model = poromechanics (it was "
+        "silently added to the flow's fracture pressure as a wall load)",
+        ["subsection <Fractures>: <Pressure> = 1e6 with Model = "
+         "poromechanics", "Flow/Initial pressure"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               SEGMENT + section("Fractures", Pressure="1e6")}),
     "monolithic_with_fractures": case(
         "`Coupling scheme = monolithic` on a fractured scene",
         ["Nonlinear solver/Coupling scheme = monolithic is not available "
