@@ -397,9 +397,25 @@ namespace PolyFrac
         return report.newton_iterations;
       }
 
-    // Implicit Euler from t = 0: the initial state is step 0 of the
-    // series; a failed step is cut and retried (TimeStepping).
+    // Implicit Euler from t = 0: the initial state (in equilibrium, if
+    // the model brings it there) is step 0 of the series; a failed step is
+    // cut and retried (TimeStepping).
     TimeStepping stepping(prm, level);
+    {
+      Timer                     wall;
+      std::optional<StepReport> start;
+      {
+        TimerOutput::Scope section(timer, "solve");
+        start = model.start_in_equilibrium(out);
+      }
+      if (start)
+        {
+          TimerOutput::Scope section(timer, "postprocessing");
+          model.print_step_summary(out);
+          output.write_time_series_row(
+            0, 0, 0, 0, *start, model.errors(0), wall.wall_time());
+        }
+    }
     output_state(0);
     std::optional<unsigned int> newton_iterations;
     while (!stepping.is_at_end())

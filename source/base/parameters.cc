@@ -902,6 +902,17 @@ namespace PolyFrac
                       "The most time steps a level may take; the run stops "
                       "with an error when it would take more (checked before "
                       "the run for fixed steps).");
+    prm.declare_entry(
+      "Equilibrium start",
+      "true",
+      Patterns::Bool(),
+      "Model = poromechanics: before the first step, solve the mechanics "
+      "(contact and face bubbles included) at t = 0 under the initial "
+      "stress, the loads at t = 0 and the initial pressures, held fixed "
+      "(drained), and start from that state, written as step 0 of the time "
+      "series. A load meant to act from t = 0+ on only (Terzaghi's) must "
+      "then read t > 0 ? F : 0. An Exact solution/Analytic solution gives "
+      "the initial state itself, and no equilibrium is solved.");
     prm.leave_subsection();
   }
 
@@ -1294,7 +1305,8 @@ namespace PolyFrac
     for (const std::string &value :
          Utilities::split_string_list(prm->get("Output times")))
       time.output_times.push_back(Utilities::string_to_double(value));
-    time.max_steps = prm->get_integer("Maximum steps");
+    time.max_steps         = prm->get_integer("Maximum steps");
+    time.equilibrium_start = prm->get_bool("Equilibrium start");
     prm->leave_subsection();
     check_time_steps();
 
@@ -1691,8 +1703,11 @@ namespace PolyFrac
                                       "Adaptive",
                                       "Maximum time step",
                                       "Output times",
-                                      "Maximum steps"})
+                                      "Maximum steps",
+                                      "Equilibrium start"})
         warn_if_set("Time", entry, "a static Model = " + model);
+    if (model == "flow")
+      warn_if_set("Time", "Equilibrium start");
     if (model != "poromechanics")
       for (const std::string entry : {"Coupling tolerance",
                                       "Maximum coupling iterations",

@@ -204,6 +204,38 @@ namespace PolyFrac
 
 
 
+  template <int dim>
+  Vector<double>
+  FaceBubbles<dim>::bubbles_at_rest(const Vector<double>      &u,
+                                    const std::vector<double> &p,
+                                    const double               b,
+                                    const Vector<double>      &loads)
+  {
+    if (n_bubbles() == 0)
+      return Vector<double>();
+    if (bubble_sparsity.n_rows() != n_bubbles())
+      {
+        DynamicSparsityPattern pattern(n_bubbles());
+        add_couplings(pattern, 0, false);
+        bubble_sparsity.copy_from(pattern);
+        bubble_stiffness.reinit(bubble_sparsity);
+        add_stiffness(bubble_stiffness, 0, false);
+        bubble_factorisation.initialize(bubble_stiffness);
+      }
+    // F_s − A_su u + b D_sᵀ p.
+    Vector<double> rhs = loads, coupled, unused(u.size());
+    vmult(u, Vector<double>(n_bubbles()), unused, coupled);
+    rhs -= coupled;
+    for (unsigned int c = 0; c < blocks.size(); ++c)
+      for (unsigned int j = 0; j < blocks[c].bubbles.size(); ++j)
+        rhs(blocks[c].bubbles[j]) += b * p[c] * blocks[c].divergence[j];
+    Vector<double> s(n_bubbles());
+    bubble_factorisation.vmult(s, rhs);
+    return s;
+  }
+
+
+
   template class FaceBubbles<2>;
   template class FaceBubbles<3>;
 } // namespace PolyFrac

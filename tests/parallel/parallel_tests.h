@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/model.h>
 
 #include "../tests.h"
 
@@ -28,13 +29,18 @@ namespace PolyFrac::Testing
     const LevelDiscretization<dim> discretization(prm, 0, communicator);
     ModelType                      model(prm, discretization);
     std::ostringstream             ignored;
+    const auto step = [&](const double t_old, const double t_new) {
+      const StepReport report = model.step(t_old, t_new, ignored);
+      AssertThrow(report.converged, ExcMessage(report.failure));
+    };
     if (!model.is_time_dependent())
-      model.step(0, 0, ignored);
+      step(0, 0);
     else
       {
+        model.start_in_equilibrium(ignored);
         const double dt = prm.time.time_step;
         for (double t = 0; t < prm.time.end_time - 1e-12 * dt; t += dt)
-          model.step(t, t + dt, ignored);
+          step(t, t + dt);
       }
     return extract(model);
   }

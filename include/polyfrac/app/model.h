@@ -93,6 +93,16 @@ namespace PolyFrac
     level_start() const;
 
     /**
+     * Brings the initial state of a time-dependent model to equilibrium
+     * before the first step (Time/Equilibrium start) and reports it as
+     * step 0; prints its progress to @p out. Throws if it fails. The
+     * default (a model whose initial state is its own) does nothing and
+     * returns no report.
+     */
+    virtual std::optional<StepReport>
+    start_in_equilibrium(std::ostream &out);
+
+    /**
      * One step from the current state at @p t_old to @p t_new (both 0 for
      * a static model); prints its progress to @p out. On failure the
      * report says so and the state stays that of @p t_old.
@@ -155,6 +165,15 @@ namespace PolyFrac
   Model<dim>::level_start() const
   {
     return nullptr;
+  }
+
+
+
+  template <int dim>
+  inline std::optional<StepReport>
+  Model<dim>::start_in_equilibrium(std::ostream &)
+  {
+    return std::nullopt;
   }
 
 

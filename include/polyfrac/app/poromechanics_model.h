@@ -16,7 +16,9 @@
 #include <polyfrac/physics/mechanical_state.h>
 #include <polyfrac/postprocessing/energy_balance.h>
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace PolyFrac
@@ -68,6 +70,18 @@ namespace PolyFrac
     {
       return true;
     }
+
+    /**
+     * Time/Equilibrium start: the mechanics (contact and face bubbles
+     * included) at t = 0 under the initial stress, the loads at t = 0 and
+     * the initial pressures, which are held (drained): the iteration of
+     * couple() with the pressures fixed and the bubbles at rest under each
+     * mechanics iterate. The porosity and the Coulomb slip count from this
+     * state. No report (nothing solved) with an analytic solution, whose
+     * state at t = 0 is the initial state. Throws if it fails.
+     */
+    std::optional<StepReport>
+    start_in_equilibrium(std::ostream &out) override;
 
     /** One implicit Euler step by fixed-stress iterations; prints one line
      * per step. */
@@ -174,6 +188,43 @@ namespace PolyFrac
      * multipliers |λ_σ| of the state. */
     Scales
     scales(const Vector<double> &p) const;
+
+    /** The flow half of a coupling iteration: from the mechanics iterate
+     * u^k and the pressures p^k, the bubbles s and the pressures p. */
+    using FlowHalf = std::function<void(const MechanicalState<dim> &u_k,
+                                        const Vector<double>       &p_k,
+                                        Vector<double>             &s,
+                                        Vector<double>             &p)>;
+
+    /**
+     * The fixed point of @p flow_half and the mechanics at time @p t from
+     * the iterates @p u_k, @p p_k (the current state to start with), which
+     * it updates: Anderson-accelerated on (s, p); stops when the relative
+     * increment (with the floors @p scale) is at most the coupling
+     * tolerance. Reports failure (not converged in Maximum coupling
+     * iterations, or a failed solve) with what was tried.
+     */
+    StepReport
+    couple(const double          t,
+           const FlowHalf       &flow_half,
+           const Scales         &scale,
+           const double          tolerance,
+           MechanicalState<dim> &u_k,
+           Vector<double>       &p_k);
+
+    /** Adds the contact states, the mean aperture and the mean fracture
+     * pressure of the current state to @p report (with fractures). */
+    void
+    summarise_fractures(StepReport &report) const;
+
+    /** Ends the progress line of a step with its Newton iterations and
+     * contact states (with fractures). */
+    void
+    print_contact_summary(const StepReport &report, std::ostream &out) const;
+
+    /** |K| div_K of @p u per cell, face bubbles included. */
+    std::vector<double>
+    volume_changes(const MechanicalState<dim> &u) const;
 
     /** a_σ: the opening per unit fracture pressure of each face (probe). */
     std::vector<double>

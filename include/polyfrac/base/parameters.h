@@ -371,6 +371,9 @@ namespace PolyFrac
       std::vector<double> output_times;
       /** Maximum steps per level. */
       unsigned int max_steps;
+      /** Equilibrium start: the mechanics is brought to equilibrium at
+       * t = 0, the pressures held, before the first step (poromechanics). */
+      bool equilibrium_start;
     } time; /**< The subsection Time. */
 
   private:

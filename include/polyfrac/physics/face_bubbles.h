@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -131,6 +132,19 @@ namespace PolyFrac
     std::vector<double>
     volume_changes(const Vector<double> &s) const;
 
+    /**
+     * The bubbles in equilibrium with the mechanics unknowns @p u and the
+     * cell pressures @p p (Biot coefficient @p b), the bubble rows of the
+     * momentum balance solved for s: A_ss s = F_s − A_su u + b D_sᵀ p, with
+     * @p loads = F_s (loads()). A_ss (symmetric positive definite: every
+     * bubble lives on an interior face) is factorised at the first call.
+     */
+    Vector<double>
+    bubbles_at_rest(const Vector<double>      &u,
+                    const std::vector<double> &p,
+                    const double               b,
+                    const Vector<double>      &loads);
+
   private:
     /** The reconstruction of cell @p c with its face bubbles appended
      * (vector unknowns, trace weight 1). */
@@ -149,6 +163,10 @@ namespace PolyFrac
     std::vector<Tensor<1, dim>> normals;
     /** The blocks, per cell. */
     std::vector<CellBlock> blocks;
+    /** A_ss and its factorisation (bubbles_at_rest()). */
+    SparsityPattern      bubble_sparsity;
+    SparseMatrix<double> bubble_stiffness;
+    SparseDirectUMFPACK  bubble_factorisation;
   };
 } // namespace PolyFrac
 
