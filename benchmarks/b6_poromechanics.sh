@@ -9,9 +9,10 @@
 # benchmarks/b6-poromechanics-47k.csv (or -127k.csv) and the fracture
 # fields of the last step are drawn by render_fracture_jumps.py into
 # benchmarks/b6-poro-47k-*.png (opening, slip, states, fracture pressure).
+# --coarse runs the 17k mesh of the mesh study (geo/b6-network-coarse.geo).
 # The 47k run takes about 15 minutes on 2 cores, the 127k one about an hour.
 #
-# usage: benchmarks/b6_poromechanics.sh [--fine] [path/to/polyfrac]
+# usage: benchmarks/b6_poromechanics.sh [--fine | --coarse] [path/to/polyfrac]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -20,6 +21,10 @@ label=47k
 if [ "${1:-}" = "--fine" ]; then
   mesh=geo/b6-network-fine.geo
   label=127k
+  shift
+elif [ "${1:-}" = "--coarse" ]; then
+  mesh=geo/b6-network-coarse.geo
+  label=17k
   shift
 fi
 program=${1:-$root/build/polyfrac}
@@ -34,7 +39,7 @@ echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
   { tail -20 "$out.log"; cat "$out.time"; exit 1; }
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 tail -1 "$out.time"
-grep "^Step to" "$out.log"
+grep "^Step" "$out.log"
 cp "$out/time_series-level-0.csv" "$root/benchmarks/b6-poromechanics-$label.csv"
 column -s, -t < "$out/time_series-level-0.csv"
 /usr/bin/python3 "$root/benchmarks/render_fracture_jumps.py" \

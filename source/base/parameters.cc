@@ -189,15 +189,36 @@ namespace PolyFrac
     /**
      * Checks @p file_name (a text file) and the files it includes (relative
      * paths taken from @p directory, that of the main parameter file), and
-     * returns the Dimension set in them, 0 if none.
+     * returns the Dimension set in them, 0 if none. @p chain holds the files
+     * that include it, outermost first: a file that includes itself, directly
+     * or through others, is refused (deal.II would recurse until the stack
+     * overflows).
      */
     unsigned int
-    scan(const std::string &file_name,
-         const std::string &directory,
-         const std::string &what,
-         const std::string &relative_to)
+    scan(const std::string        &file_name,
+         const std::string        &directory,
+         const std::string        &what,
+         const std::string        &relative_to,
+         std::vector<std::string> &chain)
     {
       check_text_file(file_name, what, relative_to);
+      const std::string canonical =
+        std::filesystem::weakly_canonical(file_name).string();
+      if (std::find(chain.begin(), chain.end(), canonical) != chain.end())
+        {
+          std::string cycle;
+          for (auto link = std::find(chain.begin(), chain.end(), canonical);
+               link != chain.end();
+               ++link)
+            cycle += "<" + *link + "> includes ";
+          AssertThrow(false,
+                      ExcMessage(what + " <" + file_name +
+                                 "> is included again by itself: " + cycle +
+                                 "<" + canonical +
+                                 ">. Remove the include line that closes "
+                                 "the cycle."));
+        }
+      chain.push_back(canonical);
       std::ifstream    in(file_name);
       const std::regex set_dimension(R"(^\s*set\s+Dimension\s*=\s*(\S+)\s*$)");
       const std::regex include(R"(^\s*(include|INCLUDE)\s+(.*\S)\s*$)");
@@ -217,7 +238,8 @@ namespace PolyFrac
                      std::to_string(line_number) + ": the included file",
                    "include paths are relative to the directory of the "
                    "parameter file, <" +
-                     (directory.empty() ? std::string(".") : directory) + ">"));
+                     (directory.empty() ? std::string(".") : directory) + ">",
+                   chain));
           else if (std::regex_match(line, match, set_dimension))
             {
               AssertThrow(match[1] == "2" || match[1] == "3",
@@ -228,6 +250,7 @@ namespace PolyFrac
               dim = std::stoi(match[1]);
             }
         }
+      chain.pop_back();
       return dim;
     }
 
@@ -258,11 +281,13 @@ namespace PolyFrac
   unsigned int
   Parameters::read_dimension(const std::string &file_name)
   {
-    const unsigned int dim =
+    std::vector<std::string> chain;
+    const unsigned int       dim =
       scan(file_name,
            directory_of(file_name),
            "The parameter file",
-           "a relative path starts in the current directory");
+           "a relative path starts in the current directory",
+           chain);
     return dim == 0 ? 2 : dim;
   }
 
@@ -923,10 +948,12 @@ namespace PolyFrac
                     const std::vector<std::string> &overrides)
   {
     file_name = name;
+    std::vector<std::string> chain;
     scan(file_name,
          directory_of(file_name),
          "The parameter file",
-         "a relative path starts in the current directory");
+         "a relative path starts in the current directory",
+         chain);
     try
       {
         std::ifstream          in(file_name);

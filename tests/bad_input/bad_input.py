@@ -112,6 +112,24 @@ CASES = {
         ["In <scene.prm>, line", "the included file <missing.prm> does not "
          "exist", "relative to the directory of the parameter file"],
         files={"scene.prm": "include missing.prm\n"}),
+    "include_itself": case(
+        "a parameter file that includes itself (was SIGSEGV: deal.II "
+        "recursed until the stack overflowed)",
+        ["the included file <scene.prm> is included again by itself",
+         "scene.prm> includes", "Remove the include line that closes the "
+         "cycle"],
+        files={"scene.prm": "include scene.prm\n"}),
+    "include_cycle": case(
+        "`a.prm` includes `b.prm`, which includes `a.prm`",
+        ["the included file <", "a.prm> is included again by itself",
+         "a.prm> includes <", "b.prm> includes <"],
+        files={"a.prm": "include b.prm\n" + BASE_2D,
+               "b.prm": "include a.prm\n"}, args=["a.prm"]),
+    "include_twice": case(
+        "`scene.prm` includes `common.prm` twice (not a cycle): a correct run",
+        [], files={"scene.prm": "include common.prm\ninclude common.prm\n",
+                   "common.prm": BASE_2D}, status=0,
+        written=["results/convergence.csv"]),
     "include_relative_to_file": case(
         "`sub/scene.prm` includes `common.prm` (next to it), `Output "
         "directory = results`, run from elsewhere: right, outputs in "
