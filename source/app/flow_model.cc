@@ -1,6 +1,8 @@
 #include <polyfrac/app/flow_model.h>
 
+#include <algorithm>
 #include <iomanip>
+#include <sstream>
 
 namespace PolyFrac
 {
@@ -59,12 +61,31 @@ namespace PolyFrac
     // The largest residual of a cell or fracture face balance relative to
     // its largest term: round-off with UMFPACK, about the CG tolerance with
     // AMG.
+    const double residual =
+      flow.mass_balance_residual(data, previous, pressure);
     out << "Flow step to t = " << t_new << ": mass balance residual "
-        << std::setprecision(2)
-        << flow.mass_balance_residual(data, previous, pressure)
-        << std::setprecision(6) << std::endl;
+        << std::setprecision(2) << residual << std::setprecision(6)
+        << std::endl;
 
-    StepReport  report;
+    StepReport report;
+    // A balance off by more than this did not come from round-off or the
+    // Krylov stop: the system was singular or the solver failed.
+    const double bound = std::max(1e-6, 100 * prm.solver.tolerance);
+    if (!(residual <= bound))
+      {
+        std::ostringstream what;
+        what << "the mass balance of the step to t = " << t_new << " is off by "
+             << residual << " of its largest term (bound " << bound
+             << "): the flow system is singular (a part of the matrix or of "
+                "the fractures with neither a prescribed pressure nor "
+                "storage, or a zero permeability cutting cells off) or the "
+                "linear solver did not converge (Linear solver/Tolerance, "
+                "Maximum iterations).";
+        pressure         = previous;
+        report.converged = false;
+        report.failure   = what.str();
+        return report;
+      }
     const auto &network  = *discretization.network;
     const auto &geometry = *discretization.geometry;
     if (network.n_fracture_faces() > 0)

@@ -530,6 +530,24 @@ CASES = {
         "`Model = flow`, `Flow/Viscosity = 0`",
         ["subsection <Flow>", "<Viscosity> must be > 0 (Pa s), not 0"],
         files={"scene.prm": FLOW + section("Flow", Viscosity="0")}),
+    "flow_isolated_fracture_without_storage": case(
+        "`Model = flow`: a fracture fed by a source, cut off from the matrix "
+        "(Permeability = 0) and from every boundary, with Fracture "
+        "compressibility = 0, while the matrix has storage and a drained "
+        "side (was: p_f = 1.35e19 Pa written, exit 0)",
+        ["the mass balance of the step to t =", "is off by",
+         "the flow system is singular", "It failed after halving the time "
+         "step 10 times"],
+        # On 8 x 8 squares UMFPACK does not find the system singular (on
+        # 4 x 4 it does, and says so).
+        files={"scene.prm": FLOW + SEGMENT + section(
+            "Mesh", Subdivisions="8, 8") + section(
+            "Flow", Permeability="0", Fracture_source="1e-6",
+            Fracture_compressibility="0", Pressure_boundary_ids="0") +
+            # The initial state (t = 0) is written before the first step
+            # by design: the failing step is the subject here.
+            section("Output", Write_VTU="false")},
+        stage="level"),
     "flow_negative_permeability": case(
         "`Model = flow`, `Flow/Permeability = x - 2` (negative in the box)",
         ["Flow/Permeability is", "< 0 at the point",
