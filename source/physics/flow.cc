@@ -97,13 +97,11 @@ namespace PolyFrac
         const double      k = permeability->value(x);
         if (k < 0)
           {
-            std::ostringstream where;
-            where << x;
-            AssertThrow(false,
-                        ExcMessage(
-                          "In <" + prm.file_name + ">: Flow/Permeability is " +
-                          std::to_string(k) + " < 0 at the point " +
-                          where.str() + "; a permeability must be >= 0."));
+            std::ostringstream what;
+            what << "In <" << prm.file_name << ">: Flow/Permeability is " << k
+                 << " < 0 at the point " << x
+                 << "; a permeability must be >= 0.";
+            AssertThrow(false, ExcMessage(what.str()));
           }
         cell_mobility.push_back(k / prm.flow.viscosity);
         cell_matrices.push_back(cell_hfv_matrix(geometry, c, alpha));

@@ -548,6 +548,13 @@ CASES = {
             # by design: the failing step is the subject here.
             section("Output", Write_VTU="false")},
         stage="level"),
+    "flow_tiny_negative_permeability": case(
+        "`Model = flow`, `Flow/Permeability = -1e-20` (was printed "
+        "\"-0.000000 < 0\")",
+        ["Flow/Permeability is -1e-20 < 0 at the point",
+         "a permeability must be >= 0"],
+        files={"scene.prm": FLOW + section("Flow", Permeability="-1e-20")},
+        stage="level"),
     "flow_negative_permeability": case(
         "`Model = flow`, `Flow/Permeability = x - 2` (negative in the box)",
         ["Flow/Permeability is", "< 0 at the point",
