@@ -254,6 +254,47 @@ namespace PolyFrac
       return dim;
     }
 
+    /**
+     * The integers of the list @p text of entry @p entry (a Patterns::List
+     * of integers); throws, naming the entry (@p where: file and
+     * subsection), if one is listed twice.
+     */
+    template <typename Integer>
+    std::vector<Integer>
+    read_ids(const std::string &text,
+             const std::string &entry,
+             const std::string &where)
+    {
+      std::vector<Integer> ids;
+      for (const std::string &item : Utilities::split_string_list(text))
+        {
+          const Integer id = Utilities::string_to_int(item);
+          AssertThrow(std::find(ids.begin(), ids.end(), id) == ids.end(),
+                      ExcMessage(where + ": <" + entry + "> lists " + item +
+                                 " twice; list each once."));
+          ids.push_back(id);
+        }
+      return ids;
+    }
+
+    /** Throws, naming both entries, if the lists @p a (of entry
+     * @p entry_a) and @p b share an id. */
+    template <typename Integer>
+    void
+    check_disjoint(const std::vector<Integer> &a,
+                   const std::string          &entry_a,
+                   const std::vector<Integer> &b,
+                   const std::string          &entry_b,
+                   const std::string          &where)
+    {
+      for (const Integer id : b)
+        AssertThrow(std::find(a.begin(), a.end(), id) == a.end(),
+                    ExcMessage(where + ": boundary id " + std::to_string(id) +
+                               " is listed in both <" + entry_a + "> and <" +
+                               entry_b +
+                               ">; give each boundary one kind of data."));
+    }
+
     /** The text of a deal.II exception on one line (deal.II lays out
      * pattern mismatches over several lines). */
     std::string
@@ -1136,11 +1177,10 @@ namespace PolyFrac
     if (!prm->get(dim == 2 ? "Polygons" : "Segments").empty())
       warnings.push_back(std::string(dim == 2 ? "Polygons" : "Segments") +
                          " is ignored in dimension " + std::to_string(dim));
-    fractures.gmsh_physical_tags.clear();
-    for (const std::string &s :
-         Utilities::split_string_list(prm->get("Gmsh physical tags")))
-      fractures.gmsh_physical_tags.push_back(Utilities::string_to_int(s));
-    fractures.pressure = prm->get("Pressure");
+    fractures.gmsh_physical_tags = read_ids<int>(prm->get("Gmsh physical tags"),
+                                                 "Gmsh physical tags",
+                                                 fwhere);
+    fractures.pressure           = prm->get("Pressure");
     AssertThrow((model != "flow" && model != "poromechanics") ||
                   fractures.pressure == "0",
                 ExcMessage(fwhere + ": <Pressure> = " + fractures.pressure +
@@ -1169,14 +1209,20 @@ namespace PolyFrac
     boundary.dirichlet_expression =
       checked_vector_expression("Boundary conditions/Dirichlet expression",
                                 prm->get("Dirichlet expression"));
-    boundary.dirichlet_ids.clear();
-    boundary.neumann_ids.clear();
-    for (const std::string &s :
-         Utilities::split_string_list(prm->get("Dirichlet boundary ids")))
-      boundary.dirichlet_ids.push_back(Utilities::string_to_int(s));
-    for (const std::string &s :
-         Utilities::split_string_list(prm->get("Neumann boundary ids")))
-      boundary.neumann_ids.push_back(Utilities::string_to_int(s));
+    const std::string bwhere =
+      "In <" + file_name + ">, subsection <Boundary conditions>";
+    boundary.dirichlet_ids =
+      read_ids<unsigned>(prm->get("Dirichlet boundary ids"),
+                         "Dirichlet boundary ids",
+                         bwhere);
+    boundary.neumann_ids = read_ids<unsigned>(prm->get("Neumann boundary ids"),
+                                              "Neumann boundary ids",
+                                              bwhere);
+    check_disjoint(boundary.dirichlet_ids,
+                   "Dirichlet boundary ids",
+                   boundary.neumann_ids,
+                   "Neumann boundary ids",
+                   bwhere);
     boundary.neumann_traction =
       checked_vector_expression("Boundary conditions/Neumann traction",
                                 prm->get("Neumann traction"));
@@ -1437,23 +1483,19 @@ namespace PolyFrac
                                            ">= 0 (m/(Pa s))");
     flow.matrix_source           = prm->get("Matrix source");
     flow.fracture_source         = prm->get("Fracture source");
-    flow.pressure_ids.clear();
-    flow.flux_ids.clear();
-    for (const std::string &s :
-         Utilities::split_string_list(prm->get("Pressure boundary ids")))
-      flow.pressure_ids.push_back(Utilities::string_to_int(s));
-    for (const std::string &s :
-         Utilities::split_string_list(prm->get("Flux boundary ids")))
-      {
-        const unsigned int id = Utilities::string_to_int(s);
-        AssertThrow(std::find(flow.pressure_ids.begin(),
-                              flow.pressure_ids.end(),
-                              id) == flow.pressure_ids.end(),
-                    ExcMessage(where + "boundary id " + s +
-                               " is both a Pressure and a Flux boundary id; "
-                               "give each boundary one kind of flow data."));
-        flow.flux_ids.push_back(id);
-      }
+    const std::string fwhere     = "In <" + file_name + ">, subsection <Flow>";
+    flow.pressure_ids =
+      read_ids<unsigned int>(prm->get("Pressure boundary ids"),
+                             "Pressure boundary ids",
+                             fwhere);
+    flow.flux_ids = read_ids<unsigned int>(prm->get("Flux boundary ids"),
+                                           "Flux boundary ids",
+                                           fwhere);
+    check_disjoint(flow.pressure_ids,
+                   "Pressure boundary ids",
+                   flow.flux_ids,
+                   "Flux boundary ids",
+                   fwhere);
     flow.pressure_expression = prm->get("Pressure boundary expression");
     flow.flux_expression     = prm->get("Flux boundary expression");
     const std::string alpha  = Utilities::trim(prm->get("HFV stabilisation"));

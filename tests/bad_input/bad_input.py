@@ -563,10 +563,30 @@ CASES = {
         stage="level"),
     "flow_pressure_and_flux_id": case(
         "`Flow/Pressure boundary ids = 0` and `Flux boundary ids = 0, 1`",
-        ["subsection <Flow>", "boundary id 0 is both a Pressure and a Flux "
-         "boundary id"],
+        ["subsection <Flow>", "boundary id 0 is listed in both <Pressure "
+         "boundary ids> and <Flux boundary ids>"],
         files={"scene.prm": FLOW + section("Flow", Pressure_boundary_ids="0",
                                            Flux_boundary_ids="0, 1")}),
+    "dirichlet_and_neumann_id": case(
+        "`Dirichlet boundary ids = 0, 1` and `Neumann boundary ids = 1, 2` "
+        "(the traction on 1 was dropped)",
+        ["subsection <Boundary conditions>", "boundary id 1 is listed in "
+         "both <Dirichlet boundary ids> and <Neumann boundary ids>",
+         "give each boundary one kind of data"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_boundary_ids="0, 1",
+                                    Neumann_boundary_ids="1, 2")}),
+    "dirichlet_id_twice": case(
+        "`Dirichlet boundary ids = 0, 0`",
+        ["<Dirichlet boundary ids> lists 0 twice"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Dirichlet_boundary_ids="0, 0")}),
+    "gmsh_physical_tag_twice": case(
+        "`Fractures/Gmsh physical tags = 11, 11` (made two coincident "
+        "fractures)",
+        ["subsection <Fractures>: <Gmsh physical tags> lists 11 twice"],
+        files={"scene.prm": section("Fractures",
+                                    Gmsh_physical_tags="11, 11")}),
     "flow_unknown_pressure_id": case(
         "`Model = flow`, `Flow/Pressure boundary ids = 7`",
         ["Flow/Pressure boundary ids lists the id 7",
