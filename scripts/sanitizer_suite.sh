@@ -32,6 +32,9 @@ long_tests=(
   # poromechanics_2d_slip (69 s) keeps in the Debug suite.
   polyfrac/poromechanics_impermeable # 108 s (Release 1.7 s)
   examples/step-3 # 122 s (Release 5 s; the slip scene twice)
+  # Release 2.5 s: the slip scene's step 0 and step 1 four times; the
+  # equilibrium start stays in Debug through poromechanics_2d_slip.
+  app/equilibrium_start_01
   # Two runs each of B1 and B2-3D with Coulomb friction (direct and GMRES);
   # the GMRES step itself is checked in Debug by contact/face_condensation_01.
   polyfrac/equal_runs_coulomb_amg_2d
