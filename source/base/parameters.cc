@@ -295,6 +295,21 @@ namespace PolyFrac
                                ">; give each boundary one kind of data."));
     }
 
+    /** Whether the expression @p text names the time t (as an identifier,
+     * not inside another name). */
+    bool
+    uses_time(const std::string &text)
+    {
+      static const std::regex identifier(R"([A-Za-z_][A-Za-z0-9_]*)");
+      for (auto word =
+             std::sregex_iterator(text.begin(), text.end(), identifier);
+           word != std::sregex_iterator();
+           ++word)
+        if (word->str() == "t")
+          return true;
+      return false;
+    }
+
     /** The text of a deal.II exception on one line (deal.II lays out
      * pattern mismatches over several lines). */
     std::string
@@ -1451,6 +1466,11 @@ namespace PolyFrac
     };
     const double infinity = std::numeric_limits<double>::max();
     flow.permeability     = prm->get("Permeability");
+    AssertThrow(!uses_time(flow.permeability),
+                ExcMessage(where + "<Permeability> = " + flow.permeability +
+                           " depends on t, but the permeability is evaluated "
+                           "once, at t = 0 (the flow operators are assembled "
+                           "once per level): give it in x, y (, z) only."));
     flow.viscosity = bounded("Viscosity", 0, infinity, true, "> 0 (Pa s)");
     flow.biot_coefficient =
       bounded("Biot coefficient", 0, 1, false, "in [0, 1]");
@@ -1787,6 +1807,31 @@ namespace PolyFrac
       warn_if_set("Mesh", "Refined fraction", "Mesh/Refinement = uniform");
     if (model == "flow")
       {
+        // The mechanics, which Model = flow does not solve.
+        for (const std::string entry : {"Dirichlet boundary ids",
+                                        "Dirichlet components",
+                                        "Dirichlet expression",
+                                        "Neumann boundary ids",
+                                        "Neumann traction"})
+          warn_if_set("Boundary conditions", entry);
+        for (const std::string entry : {"Friction law",
+                                        "Friction coefficient",
+                                        "Tresca threshold",
+                                        "Bubbles",
+                                        "Bubble placement",
+                                        "Complementarity parameter",
+                                        "Number of load steps"})
+          warn_if_set("Contact", entry);
+        for (const std::string entry :
+             {"Displacement", "Displacement jump", "Contact traction"})
+          warn_if_set("Exact solution", entry);
+        warn_if_set("Body force", "Function expression");
+        warn_if_set("Initial stress", "Stress");
+        warn_if_set("Material", "Lame lambda");
+        warn_if_set("Material", "Lame mu");
+        for (const std::string entry :
+             {"Maximum iterations", "Tolerance", "Initial guess"})
+          warn_if_set("Nonlinear solver", entry);
         warn_if_set("Flow", "Pressure stabilisation");
         warn_if_set("Flow", "Face bubbles");
         // The flow AMG keeps ML's smoother; there is no contact Newton.

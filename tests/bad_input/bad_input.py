@@ -548,6 +548,24 @@ CASES = {
             # by design: the failing step is the subject here.
             section("Output", Write_VTU="false")},
         stage="level"),
+    "flow_time_dependent_permeability": case(
+        "`Model = flow`, `Flow/Permeability = 1e-15 * (1 + t)` (was "
+        "evaluated at t = 0 only)",
+        ["subsection <Flow>: <Permeability> = 1e-15 * (1 + t) depends on t",
+         "evaluated once, at t = 0"],
+        files={"scene.prm": FLOW + section("Flow",
+                                           Permeability="1e-15 * (1 + t)")}),
+    "flow_entries_of_mechanics": case(
+        "`Model = flow` with `Material/Lame mu`, a Dirichlet boundary and an "
+        "initial stress set: a correct run that warns about each (the "
+        "opposite direction already warned)",
+        ["Warning: Boundary conditions/Dirichlet boundary ids is not used by "
+         "Model = flow", "Warning: Material/Lame mu is not used by Model = "
+         "flow", "Warning: Initial stress/Stress is not used by Model = flow"],
+        files={"scene.prm": FLOW + section("Material", Lame_mu="2e9") +
+               section("Boundary conditions", Dirichlet_boundary_ids="0") +
+               section("Initial stress", Stress="-1e6; 0; 0; -1e6")},
+        status=0, written=["results/convergence.csv"]),
     "flow_tiny_negative_permeability": case(
         "`Model = flow`, `Flow/Permeability = -1e-20` (was printed "
         "\"-0.000000 < 0\")",
