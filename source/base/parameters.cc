@@ -1628,6 +1628,20 @@ namespace PolyFrac
     AssertThrow(exact.displacement.empty(),
                 ExcMessage(where + "it gives the exact displacement: leave "
                                    "Exact solution/Displacement empty."));
+    AssertThrow(exact.matrix_pressure.empty() &&
+                  exact.fracture_pressure.empty(),
+                ExcMessage(where + "it gives the exact pressure: leave "
+                                   "Exact solution/Matrix pressure and "
+                                   "Fracture pressure empty."));
+    AssertThrow(fractures.geometries.empty() &&
+                  fractures.gmsh_physical_tags.empty(),
+                ExcMessage(where + "it is the solution of an unfractured " +
+                           (name == "terzaghi" ? std::string("column") :
+                                                 std::string("plate")) +
+                           ": remove the fractures (Fractures/" +
+                           (dim == 2 ? "Segments" : "Polygons") +
+                           ", Gmsh physical tags), or the analytic "
+                           "solution."));
     AssertThrow(exact.analytic_load != 0,
                 ExcMessage(where +
                            "set Exact solution/Analytic load, the "
@@ -1797,6 +1811,12 @@ namespace PolyFrac
         warn_if_set("Time", entry, "a static Model = " + model);
     if (model == "flow")
       warn_if_set("Time", "Equilibrium start");
+    if (exact.analytic_solution != "none")
+      warn_if_set("Flow",
+                  "Initial pressure",
+                  "Exact solution/Analytic solution = " +
+                    exact.analytic_solution +
+                    " (its state at t = 0 is the initial state)");
     if (model != "poromechanics")
       for (const std::string entry : {"Coupling tolerance",
                                       "Maximum coupling iterations",

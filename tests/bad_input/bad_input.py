@@ -365,6 +365,22 @@ CASES = {
         files={"scene.prm": section("Model", Model="poromechanics") + section(
             "Exact solution", Analytic_solution="mandel")}),
     # The coupled step and the time steps.
+    "analytic_solution_with_fractures": case(
+        "`Analytic solution = terzaghi` on a fractured scene (was accepted)",
+        ["Exact solution/Analytic solution = terzaghi: it is the solution "
+         "of an unfractured column", "remove the fractures"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               SEGMENT + section("Exact solution",
+                                 Analytic_solution="terzaghi",
+                                 Analytic_load="1e6")}),
+    "analytic_solution_with_exact_pressure": case(
+        "`Analytic solution = terzaghi` with `Exact solution/Matrix "
+        "pressure = 0` (was silently replaced)",
+        ["it gives the exact pressure: leave Exact solution/Matrix pressure "
+         "and Fracture pressure empty"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               section("Exact solution", Analytic_solution="terzaghi",
+                       Analytic_load="1e6", Matrix_pressure="0")}),
     "pressure_stabilisation_with_face_bubbles": case(
         "`Flow/Pressure stabilisation = 0.25` with the face bubbles (default)",
         ["Flow/Pressure stabilisation = 0.25 with Flow/Face bubbles = true",
