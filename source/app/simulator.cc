@@ -5,6 +5,7 @@
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/app/time_stepping.h>
+#include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/postprocessing/verification.h>
@@ -176,7 +177,8 @@ namespace PolyFrac
     write_cell(out, error("err_fracture_pressure"));
     write_cell(out, error("err_u"));
     write_cell(out, report.energy_residual);
-    out << ',' << wall_seconds << std::endl;
+    out << ',' << wall_seconds << '\n';
+    check_flushed(*time_series, prm.output.directory + "/" + time_series_name);
   }
 
 
@@ -237,8 +239,10 @@ namespace PolyFrac
         rows.push_back(run_level(level, timer, out));
         if (root)
           {
-            std::ofstream csv(prm.output.directory + "/convergence.csv");
-            write_convergence_table(csv, rows, false, true);
+            write_checked(prm.output.directory + "/convergence.csv",
+                          [&](std::ostream &csv) {
+                            write_convergence_table(csv, rows, false, true);
+                          });
           }
       }
     written_files.push_back("convergence.csv");

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/base/parameters.h>
 
@@ -1935,9 +1936,9 @@ namespace PolyFrac
   void
   Parameters::write_used_parameters(const std::string &name) const
   {
-    std::ofstream out(name);
-    AssertThrow(out, ExcMessage("Cannot write <" + name + ">."));
-    prm->print_parameters(out, ParameterHandler::PRM);
+    write_checked(name, [&](std::ostream &out) {
+      prm->print_parameters(out, ParameterHandler::PRM);
+    });
   }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/io/vtu_writer.h>
 
@@ -331,16 +332,13 @@ namespace PolyFrac
                        step + ".vtu" :
                        step + '.' + Utilities::int_to_string(r, 4) + ".vtu";
     };
-    const auto open = [&](const std::string &file_name) {
-      const std::filesystem::path path =
-        std::filesystem::path(directory) / file_name;
-      auto out = std::make_unique<std::ofstream>(path);
-      AssertThrow(*out, ExcMessage("Cannot write <" + path.string() + ">."));
-      return out;
+    const auto path = [&](const std::string &file_name) {
+      return std::filesystem::path(directory) / file_name;
     };
     flags.time = time;
-    DataOutBase::write_vtu(
-      data.patches, data.names, data.ranges, flags, *open(piece_name(rank)));
+    write_checked(path(piece_name(rank)), [&](std::ostream &out) {
+      DataOutBase::write_vtu(data.patches, data.names, data.ranges, flags, out);
+    });
     const std::string file_name = n_ranks == 1 ? piece_name(0) : step + ".pvtu";
     times_and_names.emplace_back(time, file_name);
     if (n_ranks > 1)
@@ -353,8 +351,10 @@ namespace PolyFrac
         std::vector<std::string> piece_names;
         for (unsigned int r = 0; r < n_ranks; ++r)
           piece_names.push_back(piece_name(r));
-        DataOutBase::write_pvtu_record(
-          *open(file_name), piece_names, data.names, data.ranges, flags);
+        write_checked(path(file_name), [&](std::ostream &out) {
+          DataOutBase::write_pvtu_record(
+            out, piece_names, data.names, data.ranges, flags);
+        });
       }
 
     // deal.II 9.4 stamps the record with the date in a comment: drop it,
@@ -366,11 +366,7 @@ namespace PolyFrac
     const std::size_t end   = text.find("-->\n");
     if (begin != std::string::npos && end != std::string::npos)
       text.erase(begin, end + 4 - begin);
-    const std::filesystem::path pvd =
-      std::filesystem::path(directory) / (name + ".pvd");
-    std::ofstream pvd_out(pvd);
-    AssertThrow(pvd_out << text,
-                ExcMessage("Cannot write <" + pvd.string() + ">."));
+    write_checked(path(name + ".pvd"), [&](std::ostream &out) { out << text; });
   }
 
 
