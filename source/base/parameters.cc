@@ -311,6 +311,14 @@ namespace PolyFrac
       return false;
     }
 
+    /** @p path as an absolute path, normalised: the form in which paths
+     * are written to used_parameters.prm, so that it runs from anywhere. */
+    std::string
+    absolute_path(const std::string &path)
+    {
+      return std::filesystem::absolute(path).lexically_normal().string();
+    }
+
     /** The text of a deal.II exception on one line (deal.II lays out
      * pattern mismatches over several lines). */
     std::string
@@ -1175,6 +1183,10 @@ namespace PolyFrac
         AssertThrow(std::ifstream(mesh.file_name).good(),
                     ExcMessage(where + ": the mesh file <" + mesh.file_name +
                                "> cannot be opened."));
+        // used_parameters.prm is re-runnable from anywhere.
+        prm->enter_subsection("Mesh");
+        prm->set("File name", absolute_path(mesh.file_name));
+        prm->leave_subsection();
       }
 
     prm->enter_subsection("Fractures");
@@ -1375,6 +1387,7 @@ namespace PolyFrac
     prm->enter_subsection("Output");
     output.directory =
       resolved(prm->get("Output directory"), directory_of(file_name));
+    prm->set("Output directory", absolute_path(output.directory));
     AssertThrow(!output.directory.empty(),
                 ExcMessage("In <" + file_name +
                            ">: Output/Output directory is empty: name a "
