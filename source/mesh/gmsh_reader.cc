@@ -454,6 +454,13 @@ namespace PolyFrac
     const std::string in_file = "The gmsh mesh <" + file_name + ">";
     GmshSession       session;
     open_and_mesh(file_name, dim, n_refinements);
+    // gmsh reports an empty model (an empty or foreign file) as of
+    // dimension -1.
+    AssertThrow(gmsh::model::getDimension() >= 0,
+                ExcMessage(in_file +
+                           " holds no mesh or geometry that gmsh can read "
+                           "(an empty file, or not a .msh/.geo file): check "
+                           "Mesh/File name."));
     AssertThrow(gmsh::model::getDimension() == dim,
                 ExcMessage(in_file + " is " +
                            std::to_string(gmsh::model::getDimension()) +

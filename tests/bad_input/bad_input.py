@@ -615,6 +615,15 @@ CASES = {
         ["<Dirichlet boundary ids> lists 0 twice"],
         files={"scene.prm": section("Boundary conditions",
                                     Dirichlet_boundary_ids="0, 0")}),
+    "gmsh_empty_mesh_file": case(
+        "`Mesh/Source = gmsh` with an empty `empty.msh` (was \"is "
+        "-1-dimensional\")",
+        ["The gmsh mesh <", "empty.msh> holds no mesh or geometry that gmsh "
+         "can read", "check Mesh/File name"],
+        files={"scene.prm": section("Mesh", Source="gmsh",
+                                    File_name="empty.msh"),
+               "empty.msh": ""},
+        stage="level"),
     "gmsh_physical_tag_twice": case(
         "`Fractures/Gmsh physical tags = 11, 11` (made two coincident "
         "fractures)",
