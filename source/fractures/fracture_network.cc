@@ -1,3 +1,4 @@
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
 
 #include <polyfrac/fractures/fracture_network.h>
@@ -253,19 +254,58 @@ namespace PolyFrac
   void
   FractureNetwork<dim>::check_resolution() const
   {
+    const auto         &mesh = geometry.mesh;
     std::vector<double> covered(fractures.size(), 0.);
     for (const FractureFace &ff : fracture_faces)
       covered[ff.fracture] += geometry.faces[ff.face].measure;
+    // The same measure over the boundary faces that lie on each fracture.
+    std::vector<double> on_boundary(fractures.size(), 0.);
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.faces[f].at_boundary())
+        for (unsigned int i = 0; i < fractures.size(); ++i)
+          {
+            const double tol         = 1e-10 * geometry.faces[f].diameter;
+            bool         on_fracture = true;
+            for (const unsigned int v : mesh.faces[f].vertices)
+              on_fracture =
+                on_fracture && fractures[i].distance(mesh.vertices[v]) <= tol;
+            if (on_fracture)
+              on_boundary[i] += geometry.faces[f].measure;
+          }
+    const BoundingBox<dim> box(mesh.vertices);
     for (unsigned int i = 0; i < fractures.size(); ++i)
       {
-        const double fraction = covered[i] / fractures[i].measure;
+        const std::string fracture =
+          "Fracture " + std::to_string(i) + " (" + names[i] + ")";
+        for (const Point<dim> &p : fractures[i].points)
+          {
+            std::ostringstream where;
+            where << "(" << p << ") lies outside the mesh, whose bounding "
+                  << "box runs from (" << box.get_boundary_points().first
+                  << ") to (" << box.get_boundary_points().second << ")";
+            AssertThrow(box.point_inside(p, 1e-10),
+                        ExcMessage(fracture + ": its point " + where.str() +
+                                   ". A fracture must lie inside the domain: "
+                                   "move or shorten it."));
+          }
+        AssertThrow(on_boundary[i] < 1e-8 * fractures[i].measure,
+                    ExcMessage(fracture +
+                               " lies on the boundary of the domain, where it "
+                               "would be a boundary, not a fracture: move it "
+                               "inside, or give that boundary its own "
+                               "boundary condition."));
+        const double       fraction = covered[i] / fractures[i].measure;
+        std::ostringstream percent;
+        percent << 100 * fraction;
         AssertThrow(std::abs(fraction - 1) < 1e-8,
                     ExcMessage(
-                      "Fracture " + std::to_string(i) + " (" + names[i] +
-                      ") is not resolved by the mesh: its mesh faces cover " +
-                      std::to_string(100 * fraction) +
+                      fracture +
+                      " is not resolved by the mesh: its mesh faces cover " +
+                      percent.str() +
                       " % of it. Choose a mesh whose faces lie on the fracture "
-                      "(e.g. adapt Mesh/Subdivisions or the corners)."));
+                      "(e.g. adapt Mesh/Subdivisions or the corners; on a "
+                      "simplex box the faces are the diagonals of the "
+                      "subdivisions)."));
       }
   }
 

@@ -615,6 +615,19 @@ CASES = {
         ["<Dirichlet boundary ids> lists 0 twice"],
         files={"scene.prm": section("Boundary conditions",
                                     Dirichlet_boundary_ids="0, 0")}),
+    "fracture_outside_domain": case(
+        "`Fractures/Segments = 2, 0 : 3, 0`, outside the box (was \"not "
+        "resolved by the mesh ... adapt Subdivisions\")",
+        ["Fracture 0 (2 0 : 3 0): its point (2 0) lies outside the mesh",
+         "A fracture must lie inside the domain"],
+        files={"scene.prm": section("Fractures", Segments="2, 0 : 3, 0")},
+        stage="level"),
+    "fracture_on_boundary": case(
+        "`Fractures/Segments = -1, -1 : 1, -1`, on the bottom of the box (was "
+        "\"not resolved by the mesh\")",
+        ["Fracture 0 (-1 -1 : 1 -1) lies on the boundary of the domain"],
+        files={"scene.prm": section("Fractures", Segments="-1, -1 : 1, -1")},
+        stage="level"),
     "gmsh_empty_mesh_file": case(
         "`Mesh/Source = gmsh` with an empty `empty.msh` (was \"is "
         "-1-dimensional\")",
