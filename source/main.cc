@@ -11,10 +11,14 @@
 
 #include <polyfrac/app/simulator.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <new>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,6 +28,35 @@ namespace
   using namespace PolyFrac;
 
   const std::string source_dir = POLYFRAC_SOURCE_DIR;
+
+  /**
+   * The shipped scenes (prm/ *.prm of the source tree, by file name without
+   * the extension) grouped by their Model/Model (elasticity where unset),
+   * read from the files themselves so that the list cannot go stale.
+   */
+  std::map<std::string, std::vector<std::string>>
+  scenes_by_model()
+  {
+    std::map<std::string, std::vector<std::string>> scenes;
+    const std::filesystem::path directory = source_dir + "/prm";
+    if (!std::filesystem::is_directory(directory))
+      return scenes;
+    const std::regex model(R"(^\s*set\s+Model\s*=\s*(.*\S)\s*$)");
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      if (entry.path().extension() == ".prm")
+        {
+          std::ifstream in(entry.path());
+          std::string   line, name = "elasticity";
+          std::smatch   match;
+          while (std::getline(in, line))
+            if (std::regex_match(line, match, model))
+              name = match[1];
+          scenes[name].push_back(entry.path().stem().string());
+        }
+    for (auto &[name, files] : scenes)
+      std::sort(files.begin(), files.end());
+    return scenes;
+  }
 
   /** Prints the usage, the options and where a new user starts. */
   void
@@ -68,13 +101,19 @@ namespace
          "refinement levels=4\"\n"
          "                             a convergence study against an exact "
          "solution\n"
-         "  Scenes, each narrated: "
-      << source_dir
-      << "/prm/*.prm (smooth-2d/3d, b2-2d/3d,\n"
-         "  b2-2d/3d-tresca, b1-inclined-crack, b3-sneddon-2d, b3-penny-3d, "
-         "network-2d/3d-coulomb).\n"
          "  The parameter file and the outputs are described in "
-      << source_dir << "/README.md.\n";
+      << source_dir
+      << "/README.md.\n"
+         "\n"
+         "Scenes, each narrated, in "
+      << source_dir << "/prm/, by Model:\n";
+    for (const auto &[model, files] : scenes_by_model())
+      {
+        out << "  " << model << ":";
+        for (const std::string &file : files)
+          out << ' ' << file;
+        out << '\n';
+      }
   }
 
   /** Prints the versions of PolyFrac and of the deal.II it was built with. */
