@@ -849,7 +849,7 @@ namespace PolyFrac
       Patterns::Double(0),
       "Model = poromechanics: the fixed-stress iterations of a time step "
       "stop when max|Δu|/max|u| + max|Δp|/max|p| (increments of one "
-      "iteration) is below this.");
+      "iteration) is below this; in (0, 1e-4].");
     prm.declare_entry("Maximum coupling iterations",
                       "50",
                       Patterns::Integer(1),
@@ -1362,6 +1362,17 @@ namespace PolyFrac
     nonlinear.tolerance          = prm->get_double("Tolerance");
     nonlinear.initial_guess      = prm->get("Initial guess");
     nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
+    AssertThrow(nonlinear.coupling_tolerance > 0 &&
+                  nonlinear.coupling_tolerance <= 1e-4,
+                ExcMessage("In <" + file_name +
+                           ">, subsection <Nonlinear solver>: <Coupling "
+                           "tolerance> = " +
+                           prm->get("Coupling tolerance") +
+                           " must be in (0, 1e-4]: a looser one stops the "
+                           "coupling iteration before it has converged (a "
+                           "single iteration may pass), and the energy check "
+                           "of each step, whose bound is 10 x this tolerance, "
+                           "then checks nothing."));
     nonlinear.max_coupling_iterations =
       prm->get_integer("Maximum coupling iterations");
     nonlinear.anderson_depth = prm->get_integer("Anderson depth");

@@ -396,6 +396,13 @@ CASES = {
          "poromechanics", "Flow/Initial pressure"],
         files={"scene.prm": section("Model", Model="poromechanics") +
                SEGMENT + section("Fractures", Pressure="1e6")}),
+    "coupling_tolerance_loose": case(
+        "`Nonlinear solver/Coupling tolerance = 0.5` (one iteration passed, "
+        "and the energy check with it)",
+        ["<Coupling tolerance> = 0.5 must be in (0, 1e-4]",
+         "the energy check"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               section("Nonlinear solver", Coupling_tolerance="0.5")}),
     "monolithic_with_fractures": case(
         "`Coupling scheme = monolithic` on a fractured scene",
         ["Nonlinear solver/Coupling scheme = monolithic is not available "
