@@ -43,6 +43,12 @@ namespace PolyFrac
       dofs.distribute_among_ranks(*discretization.dofs,
                                   *discretization.mesh,
                                   edges);
+    else
+      // Before the first step: every part of the flow must be determined
+      // (on several ranks the mass balance check of each step stands in).
+      flow.check_determined(flow.flow_step_data(prm.time.time_step,
+                                                prm.time.time_step),
+                            pressure);
   }
 
 

@@ -416,6 +416,88 @@ namespace PolyFrac
 
 
   template <int dim>
+  void
+  Flow<dim>::check_determined(const FlowStepData   &data,
+                              const Vector<double> &previous) const
+  {
+    AssertThrow(!dofs.is_distributed(), ExcInternalError());
+    AffineConstraints<double> constraints;
+    make_constraints(data, previous, constraints);
+    SparsityPattern      sparsity;
+    SparseMatrix<double> matrix;
+    Vector<double>       rhs;
+    make_serial_matrix(sparsity, matrix);
+    assemble(data, previous, AffineConstraints<double>(), matrix, rhs);
+
+    // An unknown is anchored by a prescribed value or by storage.
+    const auto       &mesh = geometry.mesh;
+    std::vector<bool> anchored(matrix.m(), false);
+    for (const auto &line : constraints.get_lines())
+      anchored[line.index] = true;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      if (active(c, data) && data.storage[c] > 0)
+        anchored[dofs.cell_dof(c)] = true;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      if (data.fracture_storage[i] > 0)
+        anchored[dofs.fracture_face_dof(i)] = true;
+
+    // The connected parts, by a depth-first search over the couplings.
+    std::vector<bool> seen(matrix.m(), false);
+    for (types::global_dof_index start = 0; start < matrix.m(); ++start)
+      {
+        if (seen[start])
+          continue;
+        std::vector<types::global_dof_index> part = {start}, stack = {start};
+        bool                                 determined = anchored[start];
+        seen[start]                                     = true;
+        while (!stack.empty())
+          {
+            const types::global_dof_index row = stack.back();
+            stack.pop_back();
+            for (auto entry = matrix.begin(row); entry != matrix.end(row);
+                 ++entry)
+              if (entry->value() != 0 && !seen[entry->column()])
+                {
+                  seen[entry->column()] = true;
+                  determined |= anchored[entry->column()];
+                  part.push_back(entry->column());
+                  stack.push_back(entry->column());
+                }
+          }
+        if (determined)
+          continue;
+        std::sort(part.begin(), part.end());
+        const auto in_part = [&](const types::global_dof_index i) {
+          return std::binary_search(part.begin(), part.end(), i);
+        };
+        std::ostringstream where;
+        for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+          if (where.str().empty() && in_part(dofs.fracture_face_dof(i)))
+            where << "the fracture face at ("
+                  << geometry.faces[network.fracture_faces[i].face].centroid
+                  << ")";
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          if (where.str().empty() && in_part(dofs.cell_dof(c)))
+            where << "the cell at (" << geometry.cells[c].centroid << ")";
+        AssertThrow(false,
+                    ExcMessage(
+                      "In <" + prm.file_name +
+                      ">: a part of the flow "
+                      "domain (" +
+                      std::to_string(part.size()) + " unknowns, among them " +
+                      where.str() +
+                      ") has neither a prescribed pressure nor storage and "
+                      "no flux to a part that has: its pressure is "
+                      "determined by nothing. Set Flow/Fracture "
+                      "compressibility or Inverse Biot modulus > 0, put a "
+                      "Pressure boundary on it, or connect it (a non-zero "
+                      "Permeability or Fracture normal transmissibility)."));
+      }
+  }
+
+
+
+  template <int dim>
   unsigned int
   Flow<dim>::solve_step(const FlowStepData   &data,
                         const Vector<double> &previous,

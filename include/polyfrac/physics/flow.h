@@ -216,6 +216,19 @@ namespace PolyFrac
                      const Vector<double>      &previous,
                      AffineConstraints<double> &constraints) const;
 
+    /**
+     * Throws, naming the file and a place in it, unless every connected
+     * part of the flow system of @p data (the unknowns linked by non-zero
+     * couplings: fluxes, exchange) holds a prescribed pressure or storage:
+     * a part without either has its pressure determined by nothing (a
+     * fracture cut off from the matrix and the boundary with Fracture
+     * compressibility = 0), and the solvers would return garbage or fail.
+     * Serial only (one rank holds every unknown).
+     */
+    void
+    check_determined(const FlowStepData   &data,
+                     const Vector<double> &previous) const;
+
     /** Adds the couplings of this rank's cells and fracture faces (all of
      * them on one rank) to @p pattern (a deal.II or Trilinos pattern). */
     template <typename PatternType>
