@@ -47,6 +47,31 @@ long_tests=(
   parallel/contact_01.mpirun=2 # 158 s (Release 4.3 s)
   parallel/coupled_01.mpirun=2 # 182 s (Release 2.3 s)
   parallel/poromechanics_2d_slip_2_ranks_AMG # 86 s (Release 2.3 s)
+  # Debug + sanitizer (-O0) wall times of 2026-11-26 (2 cores, ctest -j2),
+  # left out to keep CI under 30 minutes. Each path stays in the Debug
+  # suite through a smaller sibling: 3D simplices through b2_3d_simplices,
+  # local refinement through the 2D smooth_*_local_refinement* pair, 3D
+  # hexahedra through b2_3d_hexes, the smooth distortion through
+  # smooth_3d_distorted, the serial condensed Tresca step through
+  # contact/face_condensation_01.
+  polyfrac/smooth_3d_local_refinement_simplices # 247 s
+  polyfrac/smooth_3d_simplices # 151 s
+  polyfrac/smooth_3d_local_refinement # 93 s
+  polyfrac/smooth_3d_hexes # 51 s
+  polyfrac/b2_3d_tresca_condensed # 112 s
+  app/smooth_distortion_01 # 91 s
+  # Paths of files, not numerics (Release 3 s): b5_closed_crack twice.
+  io/used_parameters_rerun # 123 s
+  # -O1 wall times of 2026-11-26 (idle machine, ctest -j2). 3D simplices
+  # stay through mesh/gmsh_01 and the 2D simplex scenes; contact through
+  # contact/face_condensation_01, polyfrac/b1_graded and the 2-rank Tresca
+  # scene.
+  polyfrac/b2_3d_simplices # 118 s
+  examples/step-2 # 88 s (the contact tutorial)
+  # The 84 refused inputs (2.6 s each, 218 s in all): each stops while the
+  # parameters are read, a path the Release suite runs with every case and
+  # the Debug suite with base/bad_parameters_01.
+  bad_input/.*
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \
