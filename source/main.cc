@@ -9,6 +9,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/simulator.h>
 
 #include <algorithm>
@@ -63,7 +64,8 @@ namespace
   print_help(std::ostream &out)
   {
     out
-      << "Usage: polyfrac [FILE.prm] [--set Subsection/Entry=value ...]\n"
+      << "Usage: polyfrac [FILE.prm] [--set Subsection/Entry=value ...] "
+         "[--resume]\n"
          "       polyfrac --print-parameters [2|3]\n"
          "       polyfrac --help | --version\n"
          "\n"
@@ -85,6 +87,13 @@ namespace
          "(repeatable; not Dimension),\n"
          "                             e.g. --set \"Mesh/Global "
          "refinements=2\"\n"
+         "  --resume                   goes on from the checkpoint in the "
+         "output directory\n"
+         "                             (a time-dependent run writes one every "
+         "Output/Checkpoint\n"
+         "                             interval steps, and after the step in "
+         "progress when\n"
+         "                             stopped by SIGINT or SIGTERM)\n"
          "  --print-parameters [2|3]   prints every entry with its default "
          "and documentation\n"
          "                             (dimension 2 unless given) and exits\n"
@@ -239,10 +248,21 @@ main(int argc, char **argv)
       std::ostream &out =
         Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
                                                                 elsewhere;
-      if (prm.dim == 2)
-        Simulator<2>(prm).run(out);
-      else
-        Simulator<3>(prm).run(out);
+      try
+        {
+          if (prm.dim == 2)
+            Simulator<2>(prm).run(out);
+          else
+            Simulator<3>(prm).run(out);
+        }
+      catch (const StoppedBySignal &e)
+        {
+          // Every rank stops after the same step (StopSignals::received())
+          // and ends MPI, with the status of a process ended by the signal.
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cerr << "\nPolyFrac " << e.what() << std::endl;
+          return 128 + e.signal;
+        }
     }
   catch (const ExceptionBase &e)
     {

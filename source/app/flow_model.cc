@@ -1,5 +1,8 @@
 #include <polyfrac/app/flow_model.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
@@ -49,6 +52,26 @@ namespace PolyFrac
       flow.check_determined(flow.flow_step_data(prm.time.time_step,
                                                 prm.time.time_step),
                             pressure);
+  }
+
+
+
+  template <int dim>
+  void
+  FlowModel<dim>::save_state(std::ostream &out) const
+  {
+    boost::archive::binary_oarchive archive(out);
+    archive << pressure;
+  }
+
+
+
+  template <int dim>
+  void
+  FlowModel<dim>::load_state(std::istream &in)
+  {
+    boost::archive::binary_iarchive archive(in);
+    archive >> pressure;
   }
 
 

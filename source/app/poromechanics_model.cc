@@ -2,6 +2,10 @@
 #include <polyfrac/base/anderson_acceleration.h>
 #include <polyfrac/postprocessing/analytic_solutions.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -535,6 +539,30 @@ namespace PolyFrac
         << " coupling iterations";
     print_contact_summary(report, out);
     return report;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicsModel<dim>::save_state(std::ostream &out) const
+  {
+    boost::archive::binary_oarchive archive(out);
+    archive << state << pressure << initial_cell_pressure << initial_volume;
+    if (contact)
+      archive << *contact;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicsModel<dim>::load_state(std::istream &in)
+  {
+    boost::archive::binary_iarchive archive(in);
+    archive >> state >> pressure >> initial_cell_pressure >> initial_volume;
+    if (contact)
+      archive >> *contact;
   }
 
 

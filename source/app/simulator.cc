@@ -1,6 +1,7 @@
 #include <deal.II/base/discrete_time.h>
 #include <deal.II/base/timer.h>
 
+#include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
@@ -10,9 +11,17 @@
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/postprocessing/verification.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
+#include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace PolyFrac
 {
@@ -54,12 +63,52 @@ namespace PolyFrac
     std::vector<std::string>
     file_names() const;
 
+    /** Writes the series written so far to @p archive (Checkpoint). */
+    void
+    save(boost::archive::binary_oarchive &archive) const;
+
+    /** Goes on from what save() wrote to @p archive: the time series file
+     * is written again as it stood. */
+    void
+    load(boost::archive::binary_iarchive &archive);
+
   private:
+    /** Appends @p text to the time series file (rank 0), checked. */
+    void
+    append_to_time_series(const std::string &text);
+
     const Parameters            &prm;
     std::optional<VtuSeries>     solution, fractures;
     std::string                  time_series_name;
     std::optional<std::ofstream> time_series;
+    /** What the time series file holds so far (rank 0). */
+    std::string time_series_text;
   };
+
+
+
+  /** What a checkpoint holds of the level in progress (read_checkpoint()),
+   * each part as the bytes of a boost binary archive. */
+  template <int dim>
+  struct Simulator<dim>::Resumption
+  {
+    /** The level. */
+    unsigned int level;
+    /** The Newton iterations of its steps so far. */
+    std::optional<unsigned int> newton_iterations;
+    /** TimeStepping::save(), LevelOutput::save(), Model::save_state(). */
+    std::string stepping, output, model;
+  };
+
+
+
+  /** Writes or reads @p value with the boost @p archive (Checkpoint). */
+  template <class Archive>
+  void
+  serialize(Archive &archive, ErrorValue &value, const unsigned int)
+  {
+    archive &value.value &value.absolute;
+  }
 
 
 
@@ -71,6 +120,58 @@ namespace PolyFrac
       return name == "best" ? DataOutBase::VtkFlags::best_compression :
              name == "fast" ? DataOutBase::VtkFlags::best_speed :
                               DataOutBase::VtkFlags::no_compression;
+    }
+
+    /** Writes or reads @p value with the boost @p archive. */
+    template <class Archive, typename T>
+    void
+    serialize_optional(Archive &archive, std::optional<T> &value)
+    {
+      bool     present = value.has_value();
+      archive &present;
+      if (!present)
+        value.reset();
+      else
+        {
+          if (!value)
+            value.emplace();
+          archive &*value;
+        }
+    }
+
+    /** The bytes of a boost binary archive that @p write fills. */
+    std::string
+    archive_bytes(
+      const std::function<void(boost::archive::binary_oarchive &)> &write)
+    {
+      std::ostringstream bytes;
+      {
+        boost::archive::binary_oarchive archive(bytes);
+        write(archive);
+      }
+      return bytes.str();
+    }
+
+    /** Writes or reads @p row with the boost @p archive. */
+    template <class Archive>
+    void
+    serialize_row(Archive &archive, ConvergenceRow &row)
+    {
+      archive &row.level &row.h &row.n_cells &row.n_dofs &row.wall_seconds;
+      for (const auto &[name, member] : error_columns())
+        serialize_optional(archive, row.errors.*member);
+      serialize_optional(archive, row.newton_iterations);
+    }
+
+    /** Reads the boost binary archive @p bytes with @p read. */
+    void
+    read_archive(
+      const std::string                                            &bytes,
+      const std::function<void(boost::archive::binary_iarchive &)> &read)
+    {
+      std::istringstream              in(bytes);
+      boost::archive::binary_iarchive archive(in);
+      read(archive);
     }
 
     /** Writes @p value to @p out if it is given (an empty csv cell if not). */
@@ -116,12 +217,56 @@ namespace PolyFrac
         AssertThrow(*this->time_series,
                     ExcMessage("Cannot write <" + prm.output.directory + "/" +
                                time_series_name + ">."));
-        *this->time_series
-          << "step,time,time_step,cuts,coupling_iterations,"
-             "newton_iterations,n_open,n_stick,n_slip,mean_aperture,"
-             "mean_fracture_pressure,err_pressure,err_fracture_pressure,err_u,"
-             "energy_residual,wall_seconds"
-          << std::endl;
+        append_to_time_series(
+          "step,time,time_step,cuts,coupling_iterations,"
+          "newton_iterations,n_open,n_stick,n_slip,mean_aperture,"
+          "mean_fracture_pressure,err_pressure,err_fracture_pressure,err_u,"
+          "energy_residual,wall_seconds\n");
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::LevelOutput::append_to_time_series(const std::string &text)
+  {
+    time_series_text += text;
+    *time_series << text;
+    check_flushed(*time_series, prm.output.directory + "/" + time_series_name);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::LevelOutput::save(
+    boost::archive::binary_oarchive &archive) const
+  {
+    for (const auto *series : {&solution, &fractures})
+      if (*series)
+        archive << **series;
+    archive << time_series_text;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::LevelOutput::load(boost::archive::binary_iarchive &archive)
+  {
+    for (auto *series : {&solution, &fractures})
+      if (*series)
+        archive >> **series;
+    std::string text;
+    archive >> text;
+    if (time_series)
+      {
+        // Written again from its start: the rows after the checkpoint go.
+        time_series->close();
+        time_series->open(prm.output.directory + "/" + time_series_name);
+        time_series_text.clear();
+        append_to_time_series(text);
       }
   }
 
@@ -163,7 +308,7 @@ namespace PolyFrac
           value = (errors.*member)->value;
       return value;
     };
-    std::ostream &out = *time_series;
+    std::ostringstream out;
     out << step << ',' << std::setprecision(12) << t << ',' << time_step
         << std::setprecision(6) << ',' << cuts;
     write_cell(out, report.coupling_iterations);
@@ -178,7 +323,7 @@ namespace PolyFrac
     write_cell(out, error("err_u"));
     write_cell(out, report.energy_residual);
     out << ',' << wall_seconds << '\n';
-    check_flushed(*time_series, prm.output.directory + "/" + time_series_name);
+    append_to_time_series(out.str());
   }
 
 
@@ -211,6 +356,11 @@ namespace PolyFrac
 
 
   template <int dim>
+  Simulator<dim>::~Simulator() = default;
+
+
+
+  template <int dim>
   void
   Simulator<dim>::run(std::ostream &out)
   {
@@ -230,11 +380,15 @@ namespace PolyFrac
     if (n_mpi_ranks(communicator) > 1)
       MPI_Barrier(communicator);
     written_files = {"used_parameters.prm"};
+    if (prm.output.resume)
+      read_checkpoint();
 
     // Wall times per section, summed over the levels; printed only on
     // request, since tests diff the output.
     TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
-    for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
+    for (unsigned int level = resumption ? resumption->level : 0;
+         level < prm.n_refinement_levels;
+         ++level)
       {
         rows.push_back(run_level(level, timer, out));
         if (root)
@@ -246,6 +400,9 @@ namespace PolyFrac
           }
       }
     written_files.push_back("convergence.csv");
+    // The run is whole: its checkpoint, if any, has served.
+    if (root)
+      std::filesystem::remove(Checkpoint::file_name(prm));
     out << std::endl;
     write_convergence_table(out, rows, true, false, rate_reference(prm));
     if (prm.output.print_timings)
@@ -255,6 +412,61 @@ namespace PolyFrac
       out << ' ' << name;
     out << std::endl;
     report_checks(out);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::read_checkpoint()
+  {
+    std::istringstream              bytes(Checkpoint::read(prm));
+    boost::archive::binary_iarchive archive(bytes);
+    resumption = std::make_unique<Resumption>();
+    std::size_t n_rows;
+    archive >> resumption->level >> n_rows;
+    rows.resize(n_rows);
+    for (ConvergenceRow &row : rows)
+      serialize_row(archive, row);
+    archive >> written_files;
+    serialize_optional(archive, resumption->newton_iterations);
+    archive >> resumption->stepping >> resumption->output >> resumption->model;
+    AssertThrow(resumption->level < prm.n_refinement_levels,
+                ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint(
+    const unsigned int                 level,
+    const TimeStepping                &stepping,
+    const LevelOutput                 &output,
+    const std::optional<unsigned int> &newton_iterations,
+    const Model<dim>                  &model) const
+  {
+    if (!is_root_rank(communicator))
+      return;
+    std::ostringstream model_state;
+    model.save_state(model_state);
+    Checkpoint::write(
+      prm, archive_bytes([&](boost::archive::binary_oarchive &archive) {
+        std::vector<ConvergenceRow> completed     = rows;
+        std::optional<unsigned int> newton        = newton_iterations;
+        const std::size_t           n_rows        = completed.size();
+        const std::string           stepping_data = archive_bytes(
+          [&](boost::archive::binary_oarchive &a) { stepping.save(a); });
+        const std::string output_data = archive_bytes(
+          [&](boost::archive::binary_oarchive &a) { output.save(a); });
+        archive << level << n_rows;
+        for (ConvergenceRow &row : completed)
+          serialize_row(archive, row);
+        archive << written_files;
+        serialize_optional(archive, newton);
+        const std::string model_data = model_state.str();
+        archive << stepping_data << output_data << model_data;
+      }));
   }
 
 
@@ -403,25 +615,49 @@ namespace PolyFrac
 
     // Implicit Euler from t = 0: the initial state (in equilibrium, if
     // the model brings it there) is step 0 of the series; a failed step is
-    // cut and retried (TimeStepping).
-    TimeStepping stepping(prm, level);
-    {
-      Timer                     wall;
-      std::optional<StepReport> start;
-      {
-        TimerOutput::Scope section(timer, "solve");
-        start = model.start_in_equilibrium(out);
-      }
-      if (start)
-        {
-          TimerOutput::Scope section(timer, "postprocessing");
-          model.print_step_summary(out);
-          output.write_time_series_row(
-            0, 0, 0, 0, *start, model.errors(0), wall.wall_time());
-        }
-    }
-    output_state(0);
+    // cut and retried (TimeStepping). A resumed level goes on from its
+    // checkpoint instead.
+    TimeStepping                stepping(prm, level);
     std::optional<unsigned int> newton_iterations;
+    if (resumption && resumption->level == level)
+      {
+        read_archive(resumption->stepping,
+                     [&](boost::archive::binary_iarchive &archive) {
+                       stepping.load(archive);
+                     });
+        read_archive(resumption->output,
+                     [&](boost::archive::binary_iarchive &archive) {
+                       output.load(archive);
+                     });
+        std::istringstream model_state(resumption->model);
+        model.load_state(model_state);
+        newton_iterations = resumption->newton_iterations;
+        resumption.reset();
+        out << "Resumed from <" << Checkpoint::file_name(prm) << "> after step "
+            << stepping.step_number() << ", t = " << stepping.current_time()
+            << std::endl;
+      }
+    else
+      {
+        Timer                     wall;
+        std::optional<StepReport> start;
+        {
+          TimerOutput::Scope section(timer, "solve");
+          start = model.start_in_equilibrium(out);
+        }
+        if (start)
+          {
+            TimerOutput::Scope section(timer, "postprocessing");
+            model.print_step_summary(out);
+            output.write_time_series_row(
+              0, 0, 0, 0, *start, model.errors(0), wall.wall_time());
+          }
+        output_state(0);
+      }
+
+    // SIGINT or SIGTERM stop the run after the step in progress, with a
+    // checkpoint.
+    const StopSignals signals;
     while (!stepping.is_at_end())
       {
         Timer        wall;
@@ -454,6 +690,26 @@ namespace PolyFrac
         }
         if (stepping.is_output_time())
           output_state(t_new);
+        const int signal = StopSignals::received(communicator);
+        if (signal != 0 ||
+            (prm.output.checkpoint_interval > 0 &&
+             stepping.step_number() % prm.output.checkpoint_interval == 0))
+          {
+            TimerOutput::Scope section(timer, "output");
+            write_checkpoint(level, stepping, output, newton_iterations, model);
+          }
+        if (signal != 0)
+          {
+            std::ostringstream message;
+            message << "Stopped by "
+                    << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                    << " after step " << stepping.step_number() << " of level "
+                    << level << ", t = " << t_new << ". Its checkpoint is <"
+                    << Checkpoint::file_name(prm) << ">: go on with polyfrac "
+                    << prm.file_name
+                    << " --resume (and the same --set options).";
+            throw StoppedBySignal(signal, message.str());
+          }
       }
     return newton_iterations;
   }

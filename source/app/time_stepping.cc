@@ -87,7 +87,7 @@ namespace PolyFrac
           << " reached at t = " << time.get_current_time()
           << " of End time = " << data.end_time << " (last step " << taken
           << "): raise it, or take longer steps (Time/Time step, Adaptive).";
-    AssertThrow(time.is_at_end() || time.get_step_number() < data.max_steps,
+    AssertThrow(time.is_at_end() || step_number() < data.max_steps,
                 ExcMessage(where.str()));
     // Fixed steps go back to the nominal step after a cut; adaptive ones
     // grow from the last step after an easy one.

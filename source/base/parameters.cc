@@ -946,6 +946,15 @@ namespace PolyFrac
                       "assembly, solve, postprocessing, output) at the end "
                       "(tests switch this off; convergence.csv always has "
                       "the wall time of each level).");
+    prm.declare_entry(
+      "Checkpoint interval",
+      "0",
+      Patterns::Integer(0),
+      "Time-dependent models: write the checkpoint <Output directory>/"
+      "checkpoint after every this many steps (0: only when the run is "
+      "stopped by SIGINT or SIGTERM, which it always is after the step in "
+      "progress, with a checkpoint). polyfrac FILE.prm --resume continues "
+      "from it and ends with the files of an uninterrupted run.");
     prm.leave_subsection();
 
     prm.enter_subsection("Time");
@@ -1403,9 +1412,10 @@ namespace PolyFrac
                 ExcMessage("In <" + file_name +
                            ">: Output/Output directory is empty: name a "
                            "directory, e.g. output."));
-    output.write_vtu       = prm->get_bool("Write VTU");
-    output.vtu_compression = prm->get("VTU compression");
-    output.print_timings   = prm->get_bool("Print timings");
+    output.write_vtu           = prm->get_bool("Write VTU");
+    output.vtu_compression     = prm->get("VTU compression");
+    output.print_timings       = prm->get_bool("Print timings");
+    output.checkpoint_interval = prm->get_integer("Checkpoint interval");
     prm->leave_subsection();
 
     prm->enter_subsection("Time");
@@ -1834,6 +1844,10 @@ namespace PolyFrac
                                       "Maximum steps",
                                       "Equilibrium start"})
         warn_if_set("Time", entry, "a static Model = " + model);
+    if (model != "flow" && model != "poromechanics")
+      warn_if_set("Output",
+                  "Checkpoint interval",
+                  "a static Model = " + model + " (one step, no checkpoint)");
     if (model == "flow")
       warn_if_set("Time", "Equilibrium start");
     if (exact.analytic_solution != "none")
@@ -1904,29 +1918,38 @@ namespace PolyFrac
       std::string("Usage: ") + argv[0] +
       " [FILE.prm] [--set Subsection/Entry=value ...]; see " + argv[0] +
       " --help.";
+    // The arguments but --resume (anywhere but as the value of a --set).
+    std::vector<std::string> arguments;
+    bool                     resume = false;
     for (int i = 1; i < argc; ++i)
       {
         const std::string argument = argv[i];
-        AssertThrow(argument.rfind("-", 0) != 0 || argument == "--set",
+        AssertThrow(argument.rfind("-", 0) != 0 || argument == "--set" ||
+                      argument == "--resume",
                     ExcMessage("Unknown option <" + argument + ">. " + usage));
-        if (argument == "--set")
-          ++i;
+        if (argument == "--resume")
+          resume = true;
+        else
+          arguments.push_back(argument);
+        if (argument == "--set" && i + 1 < argc)
+          arguments.push_back(argv[++i]);
       }
-    const bool        has_file = argc > 1 && std::string(argv[1]) != "--set";
-    const std::string file     = has_file ? argv[1] : default_file;
+    const bool        has_file = !arguments.empty() && arguments[0] != "--set";
+    const std::string file     = has_file ? arguments[0] : default_file;
     std::vector<std::string> overrides;
-    for (int i = has_file ? 2 : 1; i < argc; ++i)
+    for (unsigned int i = has_file ? 1 : 0; i < arguments.size(); ++i)
       {
-        AssertThrow(std::string(argv[i]) == "--set",
-                    ExcMessage("Unexpected argument <" + std::string(argv[i]) +
+        AssertThrow(arguments[i] == "--set",
+                    ExcMessage("Unexpected argument <" + arguments[i] +
                                "> (one parameter file only). " + usage));
-        AssertThrow(i + 1 < argc,
+        AssertThrow(i + 1 < arguments.size(),
                     ExcMessage("--set needs a value Subsection/Entry=value. " +
                                usage));
-        overrides.push_back(argv[++i]);
+        overrides.push_back(arguments[++i]);
       }
     Parameters prm(read_dimension(file));
     prm.parse(file, overrides);
+    prm.output.resume = resume;
     return prm;
   }
 
@@ -1963,6 +1986,25 @@ namespace PolyFrac
     write_checked(name, [&](std::ostream &out) {
       prm->print_parameters(out, ParameterHandler::PRM);
     });
+  }
+
+
+
+  std::string
+  Parameters::scene_text() const
+  {
+    std::ostringstream text;
+    prm->print_parameters(text, ParameterHandler::ShortPRM);
+    // Where the files go and how often a checkpoint is written do not
+    // change the results.
+    const std::regex output_only(
+      R"(^\s*set\s+(Output directory|Checkpoint interval)\s*=.*$)");
+    std::istringstream in(text.str());
+    std::string        scene;
+    for (std::string line; std::getline(in, line);)
+      if (!std::regex_match(line, output_only))
+        scene += line + '\n';
+    return scene;
   }
 
 

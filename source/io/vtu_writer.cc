@@ -304,6 +304,24 @@ namespace PolyFrac
 
 
 
+  namespace
+  {
+    /** @p record (a `.pvd` or `.pvtu` record) without the comment with
+     * the date that deal.II 9.4 puts in it whatever the VtkFlags say, so
+     * that the same run writes the same bytes. */
+    std::string
+    without_date(std::string record)
+    {
+      const std::size_t begin = record.find("<!--");
+      const std::size_t end   = record.find("-->\n");
+      if (begin != std::string::npos && end != std::string::npos)
+        record.erase(begin, end + 4 - begin);
+      return record;
+    }
+  } // namespace
+
+
+
   VtuSeries::VtuSeries(
     const std::string                                &directory,
     const std::string                                &name,
@@ -351,22 +369,18 @@ namespace PolyFrac
         std::vector<std::string> piece_names;
         for (unsigned int r = 0; r < n_ranks; ++r)
           piece_names.push_back(piece_name(r));
+        std::ostringstream record;
+        DataOutBase::write_pvtu_record(
+          record, piece_names, data.names, data.ranges, flags);
         write_checked(path(file_name), [&](std::ostream &out) {
-          DataOutBase::write_pvtu_record(
-            out, piece_names, data.names, data.ranges, flags);
+          out << without_date(record.str());
         });
       }
-
-    // deal.II 9.4 stamps the record with the date in a comment: drop it,
-    // so that the same run writes the same bytes.
     std::ostringstream record;
     DataOutBase::write_pvd_record(record, times_and_names);
-    std::string       text  = record.str();
-    const std::size_t begin = text.find("<!--");
-    const std::size_t end   = text.find("-->\n");
-    if (begin != std::string::npos && end != std::string::npos)
-      text.erase(begin, end + 4 - begin);
-    write_checked(path(name + ".pvd"), [&](std::ostream &out) { out << text; });
+    write_checked(path(name + ".pvd"), [&](std::ostream &out) {
+      out << without_date(record.str());
+    });
   }
 
 

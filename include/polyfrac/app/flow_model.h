@@ -42,6 +42,13 @@ namespace PolyFrac
     StepReport
     step(const double t_old, const double t_new, std::ostream &out) override;
 
+    /** The pressures. */
+    void
+    save_state(std::ostream &out) const override;
+
+    void
+    load_state(std::istream &in) override;
+
     types::global_dof_index
     n_unknowns() const override
     {

@@ -8,6 +8,7 @@
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
+#include <istream>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -110,6 +111,19 @@ namespace PolyFrac
     virtual StepReport
     step(const double t_old, const double t_new, std::ostream &out) = 0;
 
+    /**
+     * Writes to @p out the state that the later steps of a time-dependent
+     * model start from (a checkpoint, app/checkpoint.h). The default throws:
+     * a static model takes one step and has no checkpoint.
+     */
+    virtual void
+    save_state(std::ostream &out) const;
+
+    /** Replaces the state by the one save_state() wrote to @p in (the run
+     * goes on as the one that wrote it). The default throws. */
+    virtual void
+    load_state(std::istream &in);
+
     /** Prints what the model reports after a step besides the errors
      * (e.g. the largest opening); the default prints nothing. */
     virtual void
@@ -174,6 +188,24 @@ namespace PolyFrac
   Model<dim>::start_in_equilibrium(std::ostream &)
   {
     return std::nullopt;
+  }
+
+
+
+  template <int dim>
+  inline void
+  Model<dim>::save_state(std::ostream &) const
+  {
+    AssertThrow(false, ExcMessage("This model has no state to checkpoint."));
+  }
+
+
+
+  template <int dim>
+  inline void
+  Model<dim>::load_state(std::istream &)
+  {
+    AssertThrow(false, ExcMessage("This model has no state to checkpoint."));
   }
 
 

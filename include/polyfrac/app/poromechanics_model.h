@@ -88,6 +88,15 @@ namespace PolyFrac
     StepReport
     step(const double t_old, const double t_new, std::ostream &out) override;
 
+    /** The mechanical state (bubbles and contact states included), the
+     * pressures, the reference of the porosity (the state at t = 0) and
+     * the contact solver's β_σ. */
+    void
+    save_state(std::ostream &out) const override;
+
+    void
+    load_state(std::istream &in) override;
+
     types::global_dof_index
     n_unknowns() const override;
 

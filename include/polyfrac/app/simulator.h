@@ -6,6 +6,7 @@
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/app/time_stepping.h>
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/convergence_table.h>
@@ -36,6 +37,13 @@ namespace PolyFrac
    * line naming the files written; stops with an error when a check of the
    * convergence study (Maximum errors, Minimum rates) fails.
    *
+   * A time-dependent run writes a checkpoint (app/checkpoint.h) after every
+   * Output/Checkpoint interval steps and, when SIGINT or SIGTERM arrives,
+   * after the step in progress, and then stops; with --resume
+   * (Output data resume) it goes on from the checkpoint and ends with the
+   * files and numbers of the run that was not stopped. A run that ends
+   * removes its checkpoint.
+   *
    * With Mesh/Refinement = adaptive, the levels are the cycles of an
    * adaptive loop (solve, estimate, mark, refine): each level after the
    * first refines the mesh of the one before where its model's error
@@ -59,6 +67,9 @@ namespace PolyFrac
                        ModelFactory      factory      = make_model<dim>,
                        const MPI_Comm    communicator = MPI_COMM_WORLD);
 
+    /** Defined where Resumption is complete. */
+    ~Simulator();
+
     /** Runs every level: prints the progress and the tables to @p out and
      * writes the outputs to the output directory. */
     void
@@ -67,6 +78,26 @@ namespace PolyFrac
   private:
     /** The output files of one level: its VTU series and time series. */
     class LevelOutput;
+
+    /** What a checkpoint holds of the level in progress: its time steps,
+     * its outputs and the state of its model. */
+    struct Resumption;
+
+    /** Reads the checkpoint of the scene (--resume): the completed levels'
+     * rows and files into #rows and #written_files, the level in progress
+     * into #resumption. */
+    void
+    read_checkpoint();
+
+    /** Writes the checkpoint after the step just taken on @p level:
+     * #rows, #written_files, then @p stepping, @p output, the
+     * @p newton_iterations of the level so far and @p model's state. */
+    void
+    write_checkpoint(const unsigned int                 level,
+                     const TimeStepping                &stepping,
+                     const LevelOutput                 &output,
+                     const std::optional<unsigned int> &newton_iterations,
+                     const Model<dim>                  &model) const;
 
     /** Runs one level; @p timer gets its sections. */
     ConvergenceRow
@@ -110,6 +141,8 @@ namespace PolyFrac
     std::unique_ptr<const LevelDiscretization<dim>> coarser_discretization;
     /** The error indicators of #coarser_discretization. */
     Vector<float> coarser_indicators;
+    /** The level in progress of a resumed run, until its steps go on. */
+    std::unique_ptr<Resumption> resumption;
   };
 } // namespace PolyFrac
 

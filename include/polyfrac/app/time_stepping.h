@@ -73,7 +73,31 @@ namespace PolyFrac
     unsigned int
     step_number() const
     {
-      return time.get_step_number();
+      return steps_before_resumption + time.get_step_number();
+    }
+
+    /** Writes to the boost archive @p archive what the steps after the
+     * current time depend on: the current time, the steps taken, the
+     * planned step (Checkpoint). */
+    template <class Archive>
+    void
+    save(Archive &archive) const
+    {
+      const double       t = current_time();
+      const unsigned int n = step_number();
+      archive << t << n << planned_step;
+    }
+
+    /** Continues the steps from what save() wrote to @p archive: the next
+     * steps are those of the run that wrote it. */
+    template <class Archive>
+    void
+    load(Archive &archive)
+    {
+      double t;
+      archive >> t >> steps_before_resumption >> planned_step;
+      time = DiscreteTime(t, data.end_time, planned_step);
+      plan_next_step();
     }
 
     /** Halves the next step after a failed one (whose @p failure is
@@ -111,9 +135,11 @@ namespace PolyFrac
     const double nominal_step;
     DiscreteTime time;
     /** The step length the control wants (before landing). */
-    double       planned_step;
-    unsigned int cuts_in_a_row     = 0;
-    unsigned int cuts_of_last_step = 0;
+    double planned_step;
+    /** Steps taken before the start of #time (load()). */
+    unsigned int steps_before_resumption = 0;
+    unsigned int cuts_in_a_row           = 0;
+    unsigned int cuts_of_last_step       = 0;
   };
 } // namespace PolyFrac
 

@@ -81,6 +81,12 @@ namespace PolyFrac
     void
     write_used_parameters(const std::string &file_name) const;
 
+    /** Every entry with its value, one per line (no documentation), but
+     * Output/Output directory and Output/Checkpoint interval: what makes two
+     * runs the same scene (Checkpoint). */
+    std::string
+    scene_text() const;
+
     /** Prints the default tree of dimension @p dim to @p out. */
     static void
     print_defaults(const unsigned int dim, std::ostream &out);
@@ -350,6 +356,12 @@ namespace PolyFrac
       std::string vtu_compression;
       /** Print timings: whether the timing table is printed. */
       bool print_timings;
+      /** Checkpoint interval: a checkpoint after every this many steps
+       * (0: only when stopped by a signal). */
+      unsigned int checkpoint_interval;
+      /** Whether the run continues from its checkpoint (the command line's
+       * --resume, not an entry). */
+      bool resume = false;
     } output; /**< The subsection Output. */
 
     /** Time (time-dependent models). */

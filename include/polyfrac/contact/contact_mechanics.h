@@ -143,6 +143,16 @@ namespace PolyFrac
         condensation->release_amg();
     }
 
+    /** Writes or reads with the boost archive @p archive (Checkpoint) what
+     * later solves inherit from earlier ones: the complementarity
+     * parameters β_σ, divided by 10 where Newton cycled. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &beta &n_beta_reductions;
+    }
+
     /** Total number of Newton iterations over the load steps. */
     unsigned int
     n_newton_iterations() const

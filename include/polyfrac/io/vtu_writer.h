@@ -9,6 +9,10 @@
 #include <polyfrac/physics/elasticity.h>
 #include <polyfrac/physics/mechanical_state.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <string>
 #include <tuple>
 #include <utility>
@@ -135,6 +139,16 @@ namespace PolyFrac
     /** The files written so far: the VTU file of each step, the record. */
     std::vector<std::string>
     file_names() const;
+
+    /** Writes or reads the steps written so far with the boost archive
+     * @p archive (Checkpoint): a series read back goes on where the one
+     * written stood. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &times_and_names &pieces;
+    }
 
   private:
     std::string                                 directory;

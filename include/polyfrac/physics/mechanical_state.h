@@ -9,6 +9,8 @@
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 
+#include <boost/serialization/vector.hpp>
+
 #include <vector>
 
 namespace PolyFrac
@@ -72,6 +74,16 @@ namespace PolyFrac
     std::vector<Tensor<1, dim>> multipliers;
     /** The contact states per fracture face; empty without contact. */
     ContactStates contact;
+
+    /** Writes or reads the state with the boost archive @p archive
+     * (Checkpoint). */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &displacement &face_bubbles &multipliers &contact.normal &contact
+        .tangential;
+    }
 
     /** The local values of cell @p c: its node sides, then its bubbles. */
     std::vector<Tensor<1, dim>>
