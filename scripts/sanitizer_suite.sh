@@ -72,6 +72,12 @@ long_tests=(
   # parameters are read, a path the Release suite runs with every case and
   # the Debug suite with base/bad_parameters_01.
   bad_input/.*
+  # Release 49 s: 21 runs of 3 levels up to 128 x 128 cells; the
+  # non-negative weights stay through discretization/affine_exactness_01.
+  mesh/agglomeration_sweep
+  # Release 29 s, 2 ranks; the checkpoint path stays through io/restart
+  # (serial, 12 steps in this suite).
+  io/restart_2_ranks
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \

@@ -302,33 +302,6 @@ namespace PolyFrac
 
 
 
-    template <int dim>
-    void
-    check_weights(const Parameters &prm, const MeshGeometry<dim> &geometry)
-    {
-      const auto [face_weight, cell_weight] = geometry.smallest_weights();
-      if (face_weight >= 0 && cell_weight >= 0)
-        return;
-      const std::string fix =
-        prm.mesh.cells_per_polytope > 1 ?
-          "lower Mesh/Cells per polytope (now " +
-            std::to_string(prm.mesh.cells_per_polytope) +
-            "): METIS then builds polytopes closer to star-shaped" :
-          "lower Mesh/Distortion (now " + std::to_string(prm.mesh.distortion) +
-            ")";
-      AssertThrow(false,
-                  ExcMessage("In <" + prm.file_name +
-                             ">: the mesh has negative weights (smallest "
-                             "face weight " +
-                             std::to_string(face_weight) + ", cell weight " +
-                             std::to_string(cell_weight) +
-                             "): some polytopes are too far from "
-                             "star-shaped for the reconstructions; " +
-                             fix + "."));
-    }
-
-
-
     template void
     make_box(const Parameters &, const unsigned int, Triangulation<2> &);
     template void
@@ -355,9 +328,5 @@ namespace PolyFrac
     agglomerate(const Parameters &,
                 const std::vector<bool> &,
                 const PolytopalMesh<3> &);
-    template void
-    check_weights(const Parameters &, const MeshGeometry<2> &);
-    template void
-    check_weights(const Parameters &, const MeshGeometry<3> &);
   } // namespace MeshBuilder
 } // namespace PolyFrac

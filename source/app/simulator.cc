@@ -536,7 +536,6 @@ namespace PolyFrac
 
     out << "Level " << level << std::endl;
     discretization.print_summary(out);
-    MeshBuilder::check_weights(prm, *discretization.geometry);
 
     timer.enter_subsection("assembly");
     const std::unique_ptr<Model<dim>> model = factory(prm, discretization);

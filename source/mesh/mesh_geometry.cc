@@ -1,5 +1,9 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/householder.h>
+#include <deal.II/lac/vector.h>
+
 #include <polyfrac/mesh/mesh_geometry.h>
 
 #include <algorithm>
@@ -48,6 +52,122 @@ namespace PolyFrac
      * degenerate (gmsh can emit triangles whose three vertices lie on an
      * embedded fracture curve), and its reconstructions would be garbage.
      */
+    /**
+     * Makes the weights @p weights of the points @p list of @p vertices
+     * non-negative while keeping Σ ω_s = 1 and Σ ω_s x_s (the centroid), so
+     * that the reconstructions stay exact on affine fields
+     * (doc/scheme.md §4). The weights of §4 are negative on some
+     * non-convex polytopes (agglomerates, distorted cells); the centroid
+     * lies in the convex hull of the vertices, so non-negative weights
+     * ω* of at most dim + 1 of them exist: those of the non-negative least
+     * squares fit of the moments (Lawson–Hanson). The weights become
+     * (1 − θ) ω + θ ω* with the smallest θ in (0, 1] that makes them
+     * non-negative. Unchanged if no weight is negative.
+     */
+    template <int dim>
+    void
+    make_nonnegative(const std::vector<Point<dim>>   &vertices,
+                     const std::vector<unsigned int> &list,
+                     const double                     diameter,
+                     std::vector<double>             &weights)
+    {
+      if (*std::min_element(weights.begin(), weights.end()) >= 0)
+        return;
+      const unsigned int n = list.size();
+      // The moments, centred on the centroid and scaled by the diameter:
+      // rows 0..dim-1 (x_s − x̄)/h (target 0), row dim the sum (target 1).
+      Point<dim> centroid;
+      for (unsigned int s = 0; s < n; ++s)
+        centroid += weights[s] * vertices[list[s]];
+      FullMatrix<double> moments(dim + 1, n);
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            moments(d, s) = (vertices[list[s]][d] - centroid[d]) / diameter;
+          moments(dim, s) = 1;
+        }
+      Vector<double> target(dim + 1);
+      target[dim] = 1;
+
+      const auto residual = [&](const std::vector<double> &w) {
+        Vector<double> r = target;
+        for (unsigned int i = 0; i <= dim; ++i)
+          for (unsigned int s = 0; s < n; ++s)
+            r[i] -= moments(i, s) * w[s];
+        return r;
+      };
+      // Least squares on the passive columns, zero elsewhere.
+      const auto passive_fit = [&](const std::vector<bool> &passive) {
+        std::vector<unsigned int> columns;
+        for (unsigned int s = 0; s < n; ++s)
+          if (passive[s])
+            columns.push_back(s);
+        FullMatrix<double> A(dim + 1, columns.size());
+        for (unsigned int i = 0; i <= dim; ++i)
+          for (unsigned int j = 0; j < columns.size(); ++j)
+            A(i, j) = moments(i, columns[j]);
+        Vector<double> z(columns.size());
+        Householder<double>(A).least_squares(z, target);
+        std::vector<double> fit(n, 0.);
+        for (unsigned int j = 0; j < columns.size(); ++j)
+          fit[columns[j]] = z[j];
+        return fit;
+      };
+
+      std::vector<double> w(n, 0.);
+      std::vector<bool>   passive(n, false);
+      for (unsigned int iteration = 0; iteration < 3 * n; ++iteration)
+        {
+          const Vector<double> r = residual(w);
+          if (r.l2_norm() < 1e-13)
+            break;
+          // The column that lowers the residual most.
+          double       best_gain = 1e-14;
+          unsigned int best      = n;
+          for (unsigned int s = 0; s < n; ++s)
+            if (!passive[s])
+              {
+                double gain = 0;
+                for (unsigned int i = 0; i <= dim; ++i)
+                  gain += moments(i, s) * r[i];
+                if (gain > best_gain)
+                  best_gain = gain, best = s;
+              }
+          if (best == n ||
+              std::count(passive.begin(), passive.end(), true) > dim)
+            break;
+          passive[best] = true;
+          // Back along the segment to the fit until it is non-negative.
+          for (;;)
+            {
+              const std::vector<double> z     = passive_fit(passive);
+              double                    alpha = 1;
+              for (unsigned int s = 0; s < n; ++s)
+                if (passive[s] && z[s] <= 0)
+                  alpha = std::min(alpha, w[s] / (w[s] - z[s]));
+              for (unsigned int s = 0; s < n; ++s)
+                w[s] += alpha * (z[s] - w[s]);
+              if (alpha == 1)
+                break;
+              for (unsigned int s = 0; s < n; ++s)
+                if (passive[s] && w[s] <= 1e-15)
+                  passive[s] = false, w[s] = 0;
+            }
+        }
+      AssertThrow(residual(w).l2_norm() < 1e-10,
+                  ExcMessage("No non-negative weights reproduce the centroid "
+                             "of a polytope: it is degenerate."));
+
+      double theta = 0;
+      for (unsigned int s = 0; s < n; ++s)
+        if (weights[s] < 0)
+          theta = std::max(theta, -weights[s] / (w[s] - weights[s]));
+      for (unsigned int s = 0; s < n; ++s)
+        weights[s] = std::max(0., (1 - theta) * weights[s] + theta * w[s]);
+    }
+
+
+
     template <int dim>
     void
     check_cell_measure(const unsigned int c, const CellGeometry<dim> &geo)
@@ -151,6 +271,7 @@ namespace PolyFrac
             geo.weights[i] /= geo.measure;
             geo.centroid += geo.weights[i] * x[loop[i]];
           }
+        make_nonnegative(x, loop, geo.diameter, geo.weights);
       }
 
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
@@ -195,6 +316,7 @@ namespace PolyFrac
             geo.gradients[s] /= geo.measure;
             geo.centroid += geo.weights[s] * x[cell.vertices[s]];
           }
+        make_nonnegative(x, cell.vertices, geo.diameter, geo.weights);
       }
   }
 

@@ -506,13 +506,6 @@ CASES = {
         ["out of memory (std::bad_alloc)", "lower Mesh/Subdivisions"],
         files={"scene.prm": section("Mesh", Subdivisions="512, 512")},
         stage="level", address_space=10**9),
-    "negative_weights": case(
-        "`Cells per polytope = 32` on a 16 x 16 square mesh",
-        ["the mesh has negative weights", "lower Mesh/Cells per polytope "
-         "(now 32)"],
-        files={"scene.prm": section("Mesh", Subdivisions="16, 16",
-                                    Cells_per_polytope="32")},
-        stage="level"),
     "lame_lambda_below_bound": case(
         "`Lame lambda = -1`, `Lame mu = 1` in 2D",
         ["<Lame lambda> = -1.000000 is not admissible",

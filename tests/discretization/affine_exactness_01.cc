@@ -2,7 +2,10 @@
 // affine fields (affine in each region cut by two fractures crossing the
 // whole domain) on every mesh kind, that Σ_s g_s = 0, that the polytope
 // measures add up to |Ω|, and that on simplices the nodal block of S_K
-// vanishes. Each property is asserted (Testing::expect_round_off).
+// vanishes. Each property is asserted (Testing::expect_round_off). The
+// weights ω of every face and cell are non-negative, also on agglomerates
+// far from convex (32 cells per polytope, whose weights of doc/scheme.md §4
+// reach -0.017 before MeshGeometry makes them non-negative).
 
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/discretization/local_reconstruction.h>
@@ -123,6 +126,13 @@ check(const std::string &name, const std::function<void(Parameters &)> &setup)
       jump_error = std::max(jump_error, (discrete - exact).norm());
     }
 
+  const auto [face_weight, cell_weight] = geometry.smallest_weights();
+  AssertThrow(face_weight >= 0 && cell_weight >= 0,
+              ExcMessage(std::to_string(dim) + "D " + name +
+                         ": a negative weight, face " +
+                         std::to_string(face_weight) + ", cell " +
+                         std::to_string(cell_weight)));
+
   // Round-off: O(1) data (|A|, |b|, |x| <= 1 up to cos/sin factors) on at
   // most a few hundred polytopes; the default tolerance 1e-12 of
   // expect_round_off is far below the O(h^2) error a non-exact
@@ -181,6 +191,10 @@ check_all()
   check<dim>("agglomerated", [](Parameters &p) {
     p.mesh.subdivisions.assign(dim, 8);
     p.mesh.cells_per_polytope = 6;
+  });
+  check<dim>("agglomerated, far from convex", [](Parameters &p) {
+    p.mesh.subdivisions.assign(dim, dim == 2 ? 16 : 8);
+    p.mesh.cells_per_polytope = 32;
   });
   check<dim>("agglomerated, distorted", [](Parameters &p) {
     p.mesh.subdivisions.assign(dim, 8);

@@ -6,7 +6,8 @@ the time series and convergence table equal but for their wall time column
 do not belong to the run are refused with their message: another scene (the
 entry named), another version, a file cut short, no file at all.
 
-usage: restart.py POLYFRAC SOURCE_DIR WORK_DIR N_RANKS
+usage: restart.py POLYFRAC SOURCE_DIR WORK_DIR N_RANKS END_TIME
+(End time of the scene, steps of 0.5 s; the run is stopped after 3 steps)
 Exits non-zero, saying why, if any of this fails."""
 
 import os
@@ -17,10 +18,10 @@ import subprocess
 import sys
 import time
 
-program, source, work, n_ranks = sys.argv[1], sys.argv[2], sys.argv[3], int(
-    sys.argv[4])
+program, source, work = sys.argv[1:4]
+n_ranks, end_time = int(sys.argv[4]), sys.argv[5]
 scene = [os.path.join(source, "prm", "poromechanics-2d-slip.prm"),
-         "--set", "Time/End time=30", "--set", "Time/Time step=0.5",
+         "--set", "Time/End time=" + end_time, "--set", "Time/Time step=0.5",
          "--set", "Output/Print timings=false"]
 if n_ranks > 1:
     # Not yet on several ranks: the normal face bubbles. MUMPS is not

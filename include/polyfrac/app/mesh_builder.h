@@ -67,18 +67,6 @@ namespace PolyFrac
     agglomerate(const Parameters         &prm,
                 const std::vector<bool>  &fracture_face,
                 const PolytopalMesh<dim> &mesh);
-
-    /**
-     * Throws if a weight ω of @p geometry (face or cell, scheme.md §4) is
-     * negative: the polytopes are too far from star-shaped for the
-     * reconstructions. The message names the smallest weights and suggests
-     * fewer Cells per polytope (or less Distortion). The program checks
-     * every level with it; the reconstructions themselves stay exact on
-     * affine fields with negative weights (tests/discretization).
-     */
-    template <int dim>
-    void
-    check_weights(const Parameters &prm, const MeshGeometry<dim> &geometry);
   } // namespace MeshBuilder
 } // namespace PolyFrac
 
