@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev openmpi-bin libgmsh-dev gmsh numdiff cmake make g++ perl time doxygen python3-meshio valgrind)
+packages=(libdeal.ii-dev openmpi-bin libgmsh-dev gmsh numdiff cmake make g++ perl time doxygen python3-meshio valgrind procps)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
