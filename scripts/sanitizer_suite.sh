@@ -76,8 +76,16 @@ long_tests=(
   # non-negative weights stay through discretization/affine_exactness_01.
   mesh/agglomeration_sweep
   # Release 29 s, 2 ranks; the checkpoint path stays through io/restart
-  # (serial, 12 steps in this suite).
+  # (serial, 6 steps in this suite).
   io/restart_2_ranks
+  # Debug wall times of a clean-clone .ci/run on 2026-11-26 (loaded by a
+  # build beside it), left out after it took 36 minutes: elasticity stays
+  # through polyfrac/smooth_* and the 2-rank b2_3d_elasticity pair, the
+  # error indicators through b2_2d_tresca_adaptive.
+  examples/step-1 # 54 s
+  parallel/elasticity_01.mpirun=2 # 50 s on both cores
+  physics/error_indicators_01 # 41 s
+  polyfrac/adaptive_cheaper_than_uniform # 26 s
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \

@@ -1,6 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/base/parameters.h>
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <regex>
 #include <sstream>
@@ -1435,6 +1438,13 @@ namespace PolyFrac
 
     warn_unused_entries();
     check_expressions();
+    if (exact.analytic_solution != "none")
+      {
+        if (dim == 2)
+          check_analytic_loads<2>();
+        else
+          check_analytic_loads<3>();
+      }
   }
 
 
@@ -1762,6 +1772,112 @@ namespace PolyFrac
                                      ">: " + Utilities::trim(info.str())));
             }
         }
+  }
+
+
+
+  template <int dim>
+  void
+  Parameters::check_analytic_loads() const
+  {
+    const std::string where =
+      "In <" + file_name +
+      ">: Exact solution/Analytic solution = " + exact.analytic_solution + " ";
+    // The data at the corners, the face centres and the centre of the box
+    // (3^dim points), at two times after t = 0.
+    std::vector<Point<dim>> points;
+    for (unsigned int k = 0; k < std::pow(3, dim); ++k)
+      {
+        Point<dim> x;
+        for (unsigned int d = 0, code = k; d < dim; ++d, code /= 3)
+          x[d] = code % 3 == 0 ? mesh.lower_left[d] :
+                 code % 3 == 2 ? mesh.upper_right[d] :
+                                 (mesh.lower_left[d] + mesh.upper_right[d]) / 2;
+        points.push_back(x);
+      }
+    const double scale = std::abs(exact.analytic_load);
+    // Whether @p expression (n components) equals @p value(x) at every
+    // sample (t > 0) where @p at(x) holds, to 1e-12 of the load.
+    const auto equals =
+      [&](const std::string &entry,
+          const std::string &expression,
+          const unsigned int n_components,
+          const std::function<double(const Point<dim> &, unsigned int)> &value,
+          const std::function<bool(const Point<dim> &)>                 &at) {
+        if (expression.empty())
+          return true;
+        const auto f =
+          make_expression<dim>(entry, expression, n_components, constants);
+        Vector<double> v(n_components);
+        for (const double t : {time.end_time / 2, time.end_time})
+          {
+            f->set_time(t);
+            for (const Point<dim> &x : points)
+              if (at(x))
+                {
+                  f->vector_value(x, v);
+                  for (unsigned int i = 0; i < n_components; ++i)
+                    if (std::abs(v[i] - value(x, i)) > 1e-12 * scale)
+                      return false;
+                }
+          }
+        return true;
+      };
+    const auto zero     = [](const Point<dim> &, unsigned int) { return 0.; };
+    const auto anywhere = [](const Point<dim> &) { return true; };
+    for (const auto &[entry, expression, n_components] :
+         std::vector<std::tuple<std::string, std::string, unsigned int>>{
+           {"Body force/Function expression", body_force, dim},
+           {"Initial stress/Stress", initial_stress, dim * dim},
+           {"Flow/Matrix source", flow.matrix_source, 1},
+           {"Flow/Fracture source", flow.fracture_source, 1}})
+      AssertThrow(equals(entry, expression, n_components, zero, anywhere),
+                  ExcMessage(where + "describes the scene without " + entry +
+                             " (it is <" + expression +
+                             ">, not 0): a load the series does not hold "
+                             "would make its errors meaningless. Set it to "
+                             "0, or drop the analytic solution."));
+    AssertThrow(flow.flux_ids.empty() || equals("Flow/Flux boundary expression",
+                                                flow.flux_expression,
+                                                1,
+                                                zero,
+                                                anywhere),
+                ExcMessage(where +
+                           "describes the scene without inflow: "
+                           "Flow/Flux boundary expression must be 0 "
+                           "(it is <" +
+                           flow.flux_expression + ">)."));
+    // Terzaghi's load q presses on the top (the largest last coordinate):
+    // the traction there is (0, ..., −q) after t = 0; elsewhere, and for
+    // Mandel (whose plate moves by Dirichlet data), it is 0.
+    const bool terzaghi = exact.analytic_solution == "terzaghi";
+    const auto on_top   = [&](const Point<dim> &x) {
+      return x[dim - 1] == mesh.upper_right[dim - 1];
+    };
+    const auto top_load = [&](const Point<dim> &, const unsigned int i) {
+      return i == dim - 1 ? -exact.analytic_load : 0.;
+    };
+    std::ostringstream load;
+    load << "(0, " << (dim == 3 ? "0, " : "") << -exact.analytic_load << ")";
+    AssertThrow(
+      boundary.neumann_ids.empty() ||
+        (equals("Boundary conditions/Neumann traction",
+                boundary.neumann_traction,
+                dim,
+                terzaghi ?
+                  std::function<double(const Point<dim> &, unsigned int)>(
+                    top_load) :
+                  std::function<double(const Point<dim> &, unsigned int)>(zero),
+                terzaghi ? std::function<bool(const Point<dim> &)>(on_top) :
+                           std::function<bool(const Point<dim> &)>(anywhere))),
+      ExcMessage(where + "loads the boundary " +
+                 (terzaghi ? "with the traction " + load.str() +
+                               " on the top, from Exact solution/Analytic "
+                               "load, and nothing else" :
+                             "through the plate's Dirichlet data only") +
+                 "; Boundary conditions/Neumann traction is <" +
+                 boundary.neumann_traction +
+                 ">. Set it to match, or drop the analytic solution."));
   }
 
 

@@ -383,6 +383,32 @@ CASES = {
         files={"scene.prm": section("Model", Model="poromechanics") +
                section("Exact solution", Analytic_solution="terzaghi",
                        Analytic_load="1e6", Matrix_pressure="0")}),
+    "analytic_solution_other_traction": case(
+        "`Analytic solution = terzaghi`, `Analytic load = 1e6` with the "
+        "top pressed by `Neumann traction = 0; -5e5` (was accepted: the "
+        "errors compared a run under half the load with the series)",
+        ["Analytic solution = terzaghi loads the boundary with the traction "
+         "(0, -1e+06) on the top", "Neumann traction is <0; -5e5>"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               section("Boundary conditions", Neumann_boundary_ids="3",
+                       Neumann_traction="0; -5e5") +
+               section("Exact solution", Analytic_solution="terzaghi",
+                       Analytic_load="1e6")}),
+    "analytic_solution_body_force": case(
+        "`Analytic solution = terzaghi` with a body force (was accepted)",
+        ["describes the scene without Body force/Function expression (it is "
+         "<0; -1e4>, not 0)"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               section("Body force", Function_expression="0; -1e4") +
+               section("Exact solution", Analytic_solution="terzaghi",
+                       Analytic_load="1e6")}),
+    "analytic_solution_matrix_source": case(
+        "`Analytic solution = mandel` with a matrix source (was accepted)",
+        ["describes the scene without Flow/Matrix source (it is <1e-3>"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               section("Flow", Matrix_source="1e-3") +
+               section("Exact solution", Analytic_solution="mandel",
+                       Analytic_load="1e6")}),
     "pressure_stabilisation_with_face_bubbles": case(
         "`Flow/Pressure stabilisation = 0.25` with the face bubbles (default)",
         ["Flow/Pressure stabilisation = 0.25 with Flow/Face bubbles = true",

@@ -392,6 +392,14 @@ namespace PolyFrac
     static void
     declare(ParameterHandler &prm, const unsigned int dim);
 
+    /** Throws, naming the entry, if a load of the scene is not the one the
+     * Exact solution/Analytic solution describes: a body force, initial
+     * stress, source or inflow other than 0, a Neumann traction other than
+     * Terzaghi's (0, ..., −q) on the top (0 for Mandel). */
+    template <int dim>
+    void
+    check_analytic_loads() const;
+
     void
     read_values();
 
