@@ -54,7 +54,7 @@ namespace PolyFrac
      */
     /**
      * Makes the weights @p weights of the points @p list of @p vertices
-     * non-negative while keeping Σ ω_s = 1 and Σ ω_s x_s (the centroid), so
+     * non-negative while keeping Σ ω_s = 1 and Σ ω_s x_s = @p centroid, so
      * that the reconstructions stay exact on affine fields
      * (doc/scheme.md §4). The weights of §4 are negative on some
      * non-convex polytopes (agglomerates, distorted cells); the centroid
@@ -68,6 +68,7 @@ namespace PolyFrac
     void
     make_nonnegative(const std::vector<Point<dim>>   &vertices,
                      const std::vector<unsigned int> &list,
+                     const Point<dim>                &centroid,
                      const double                     diameter,
                      std::vector<double>             &weights)
     {
@@ -76,9 +77,6 @@ namespace PolyFrac
       const unsigned int n = list.size();
       // The moments, centred on the centroid and scaled by the diameter:
       // rows 0..dim-1 (x_s − x̄)/h (target 0), row dim the sum (target 1).
-      Point<dim> centroid;
-      for (unsigned int s = 0; s < n; ++s)
-        centroid += weights[s] * vertices[list[s]];
       FullMatrix<double> moments(dim + 1, n);
       for (unsigned int s = 0; s < n; ++s)
         {
@@ -271,7 +269,7 @@ namespace PolyFrac
             geo.weights[i] /= geo.measure;
             geo.centroid += geo.weights[i] * x[loop[i]];
           }
-        make_nonnegative(x, loop, geo.diameter, geo.weights);
+        make_nonnegative(x, loop, geo.centroid, geo.diameter, geo.weights);
       }
 
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
@@ -316,7 +314,8 @@ namespace PolyFrac
             geo.gradients[s] /= geo.measure;
             geo.centroid += geo.weights[s] * x[cell.vertices[s]];
           }
-        make_nonnegative(x, cell.vertices, geo.diameter, geo.weights);
+        make_nonnegative(
+          x, cell.vertices, geo.centroid, geo.diameter, geo.weights);
       }
   }
 
