@@ -829,7 +829,9 @@ namespace PolyFrac
     prm.declare_entry("Maximum iterations",
                       "50",
                       Patterns::Integer(1),
-                      "Newton iterations per load step.");
+                      "Newton iterations per load step (contact), or per "
+                      "time step (the monolithic Newton of poromechanics "
+                      "with fractures).");
     prm.declare_entry(
       "Tolerance",
       "1e-10",
@@ -850,9 +852,9 @@ namespace PolyFrac
       "Coupling tolerance",
       "1e-8",
       Patterns::Double(0),
-      "Model = poromechanics: the fixed-stress iterations of a time step "
-      "stop when max|Δu|/max|u| + max|Δp|/max|p| (increments of one "
-      "iteration) is below this; in (0, 1e-4].");
+      "Model = poromechanics: the fixed-stress (or monolithic Newton) "
+      "iterations of a time step stop when max|Δu|/max|u| + max|Δp|/max|p| "
+      "(increments of one iteration) is below this; in (0, 1e-4].");
     prm.declare_entry("Maximum coupling iterations",
                       "50",
                       Patterns::Integer(1),
@@ -863,13 +865,15 @@ namespace PolyFrac
       "Coupling scheme",
       "automatic",
       Patterns::Selection("automatic|monolithic|fixed-stress"),
-      "Model = poromechanics: monolithic solves each step as one symmetric "
-      "system in the displacement, the normal face bubbles that make the "
-      "displacement-pressure pair stable, and the pressures (direct, "
-      "factorised once per time step length; no fractures, one rank); "
-      "fixed-stress iterates flow and mechanics (with Flow/Pressure "
-      "stabilisation); automatic: monolithic where it applies, else "
-      "fixed-stress.");
+      "Model = poromechanics: monolithic solves each step as one system in "
+      "all unknowns: without fractures one symmetric linear system in the "
+      "displacement, the normal face bubbles that make the "
+      "displacement-pressure pair stable, and the pressures (factorised once "
+      "per time step length); with fractures a semi-smooth Newton method in "
+      "these, the multipliers and the contact states, the aperture in the "
+      "cubic law linearised (UMFPACK). One rank. fixed-stress iterates flow "
+      "and mechanics. automatic: monolithic where it applies, with fractures "
+      "only with Linear solver/Method = direct; else fixed-stress.");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(0),

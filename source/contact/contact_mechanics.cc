@@ -739,6 +739,51 @@ namespace PolyFrac
 
   template <int dim>
   void
+  ContactMechanics<dim>::add_couplings(DynamicSparsityPattern &pattern) const
+  {
+    dofs.add_cell_couplings(pattern);
+    add_multiplier_couplings(dofs, jumps, pattern);
+  }
+
+
+
+  template <int dim>
+  ContactStates
+  ContactMechanics<dim>::linearise(const Vector<double>       &x,
+                                   const MechanicalState<dim> &reference,
+                                   Vector<double>             &residual_vector,
+                                   SparseMatrix<double>       &jacobian)
+  {
+    Assert(!dofs.is_distributed(), ExcNotImplemented());
+    set_solution(reference);
+    previous_step = solution;
+    Vector<double> own(solution.size());
+    std::copy(x.begin(), x.begin() + own.size(), own.begin());
+    const Residual R = residual(own, 1.);
+    std::copy(R.vector.begin(), R.vector.end(), residual_vector.begin());
+
+    // A, then the faces' rows and columns (and the Dirichlet rows).
+    if (condensation)
+      for (types::global_dof_index row = 0; row < dofs.n_displacement_dofs();
+           ++row)
+        {
+          const StiffnessRow entries = stiffness_row(trilinos_stiffness, row);
+          for (int e = 0; e < entries.length; ++e)
+            if (entries.values[e] != 0)
+              jacobian.add(row, entries.column(e), entries.values[e]);
+        }
+    else
+      for (auto entry = stiffness.begin(); entry != stiffness.end(); ++entry)
+        jacobian.add(entry->row(), entry->column(), entry->value());
+    assemble_saddle_point_jacobian(
+      R.faces, beta, jumps, dofs, dirichlet, jacobian);
+    return {R.normal, R.tangential};
+  }
+
+
+
+  template <int dim>
+  void
   ContactMechanics<dim>::set_solution(const MechanicalState<dim> &state)
   {
     if (state.displacement.size() != dofs.n_displacement_dofs())

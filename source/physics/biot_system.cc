@@ -51,29 +51,24 @@ namespace PolyFrac
     if (all)
       dofs.add_cell_couplings(pattern);
     bubbles.add_couplings(pattern, n_u, all);
-    const auto &divide = coupling.divergence_matrix();
-    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-      {
-        const types::global_dof_index p_K =
-          n_u + n_s + pressure_dofs.cell_dof(c);
-        for (const unsigned int j : bubbles.cell_block(c).bubbles)
-          {
-            pattern.add(n_u + j, p_K);
-            pattern.add(p_K, n_u + j);
-          }
-        for (auto entry = divide.begin(c); all && entry != divide.end(c);
-             ++entry)
-          {
-            pattern.add(p_K, entry->column());
-            pattern.add(entry->column(), p_K);
-          }
-      }
+    for_each_volume_coupling(coupling,
+                             &bubbles,
+                             pressure_dofs,
+                             n_u,
+                             n_u + n_s,
+                             all,
+                             [&](const auto row, const auto p_K, double) {
+                               pattern.add(row, p_K);
+                               pattern.add(p_K, row);
+                             });
     DynamicSparsityPattern flow_pattern(n_p);
     flow.make_pattern(flow_pattern);
-    for (unsigned int row = 0; row < n_p; ++row)
-      for (auto entry = flow_pattern.begin(row); entry != flow_pattern.end(row);
-           ++entry)
-        pattern.add(n_u + n_s + row, n_u + n_s + entry->column());
+    for_each_block_entry(flow_pattern,
+                         n_p,
+                         n_u + n_s,
+                         [&](const auto row, const auto column, const auto &) {
+                           pattern.add(row, column);
+                         });
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       pattern.add(i, i);
     sparsity.copy_from(pattern);
@@ -138,33 +133,28 @@ namespace PolyFrac
         elasticity.assemble_operator(matrix, unused);
       }
     bubbles.add_stiffness(matrix, n_u, all);
-    const double b      = prm.flow.biot_coefficient;
-    const auto  &divide = coupling.divergence_matrix();
-    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-      {
-        const types::global_dof_index p_K =
-          n_u + n_s + pressure_dofs.cell_dof(c);
-        for (auto entry = divide.begin(c); all && entry != divide.end(c);
-             ++entry)
-          {
-            matrix.add(entry->column(), p_K, -b * entry->value());
-            matrix.add(p_K, entry->column(), -b * entry->value());
-          }
-        const auto &block = bubbles.cell_block(c);
-        for (unsigned int j = 0; j < block.bubbles.size(); ++j)
-          {
-            const types::global_dof_index s_j = n_u + block.bubbles[j];
-            matrix.add(s_j, p_K, -b * block.divergence[j]);
-            matrix.add(p_K, s_j, -b * block.divergence[j]);
-          }
-      }
+    const double b = prm.flow.biot_coefficient;
+    for_each_volume_coupling(coupling,
+                             &bubbles,
+                             pressure_dofs,
+                             n_u,
+                             n_u + n_s,
+                             all,
+                             [&](const auto   row,
+                                 const auto   p_K,
+                                 const double value) {
+                               matrix.add(row, p_K, -b * value);
+                               matrix.add(p_K, row, -b * value);
+                             });
     const double dt = data.time_step;
-    for (unsigned int row = 0; row < n_p; ++row)
-      for (auto entry = flow_matrix.begin(row); entry != flow_matrix.end(row);
-           ++entry)
-        matrix.add(n_u + n_s + row,
-                   n_u + n_s + entry->column(),
-                   -dt * entry->value());
+    for_each_block_entry(flow_matrix,
+                         n_p,
+                         n_u + n_s,
+                         [&](const auto  row,
+                             const auto  column,
+                             const auto &entry) {
+                           matrix.add(row, column, -dt * entry->value());
+                         });
     factorise();
     factorised_step = all ? dt : 0;
   }
@@ -219,20 +209,27 @@ namespace PolyFrac
     catch (const std::exception &)
       {
         AssertThrow(false,
-                    ExcMessage(
-                      "The poromechanical system (" +
-                      std::string(unknowns == Unknowns::all ?
-                                    "displacement, face bubbles, pressures" :
-                                    "face bubbles, pressures") +
-                      ") is singular: some pressures are determined by "
-                      "nothing, e.g. a fracture whose faces are all in "
-                      "contact in an impermeable matrix without a pressure "
-                      "boundary and with Flow/Fracture compressibility = 0, "
-                      "or cells without permeability and storage. Set "
-                      "Flow/Fracture compressibility or Inverse Biot modulus "
-                      "> 0, or a Pressure boundary."));
+                    ExcMessage(singular_message(
+                      unknowns == Unknowns::all ?
+                        "displacement, face bubbles, pressures" :
+                        "face bubbles, pressures")));
       }
     ++factorisations;
+  }
+
+
+
+  template <int dim>
+  std::string
+  BiotSystem<dim>::singular_message(const std::string &unknowns)
+  {
+    return "The poromechanical system (" + unknowns +
+           ") is singular: some pressures are determined by nothing, e.g. a "
+           "fracture whose faces are all in contact in an impermeable matrix "
+           "without a pressure boundary and with Flow/Fracture "
+           "compressibility = 0, or cells without permeability and storage. "
+           "Set Flow/Fracture compressibility or Inverse Biot modulus > 0, or "
+           "a Pressure boundary.";
   }
 
 

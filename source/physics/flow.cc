@@ -215,7 +215,8 @@ namespace PolyFrac
   bool
   Flow<dim>::active(const unsigned int c, const FlowStepData &data) const
   {
-    return cell_mobility[c] > 0 || data.storage[c] > 0;
+    return cell_mobility[c] > 0 || data.storage[c] > 0 ||
+           (data.volume_coupled && prm.flow.biot_coefficient != 0);
   }
 
 
@@ -254,7 +255,8 @@ namespace PolyFrac
         if (listed(flow.pressure_ids, id))
           prescribe(dofs.edge_dof(e),
                     boundary_pressure->value(edges.edges[e].centroid));
-    AssertThrow(!constraints.get_lines().empty() || has_storage,
+    AssertThrow(!constraints.get_lines().empty() || has_storage ||
+                  data.volume_coupled,
                 ExcMessage("In <" + prm.file_name +
                            ">: the flow problem has neither a prescribed "
                            "pressure nor storage, so its pressure is known "
@@ -683,6 +685,36 @@ namespace PolyFrac
       for (unsigned int b = 0; b < local_dofs.size(); ++b)
         fluxes[a - 1] -= conductivity * B(a, b) * pressure(local_dofs[b]);
     return fluxes;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::aperture_derivative(
+    const unsigned int                    i,
+    const FlowStepData                   &data,
+    const Vector<double>                 &previous,
+    const Vector<double>                 &pressure,
+    std::vector<types::global_dof_index> &local_dofs) const
+  {
+    local_dofs = fracture_dofs(i);
+    std::vector<double> derivative(local_dofs.size(), 0.);
+    const double        d = data.apertures[i];
+    if (d <= prm.flow.minimum_aperture)
+      return derivative;
+    // C_σ/η = d³/(12 η) and the storage d c_f, differentiated in d.
+    const double              slope = 3 * d * d / (12 * prm.flow.viscosity);
+    const FullMatrix<double> &B     = fracture_matrices[i];
+    for (unsigned int a = 0; a < local_dofs.size(); ++a)
+      for (unsigned int b = 0; b < local_dofs.size(); ++b)
+        derivative[a] += slope * B(a, b) * pressure(local_dofs[b]);
+    const double measure =
+      geometry.faces[network.fracture_faces[i].face].measure;
+    derivative[0] += measure * prm.flow.fracture_compressibility *
+                     (pressure(local_dofs[0]) - previous(local_dofs[0])) /
+                     data.time_step;
+    return derivative;
   }
 
 

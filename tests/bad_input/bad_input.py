@@ -429,13 +429,15 @@ CASES = {
          "the energy check"],
         files={"scene.prm": section("Model", Model="poromechanics") +
                section("Nonlinear solver", Coupling_tolerance="0.5")}),
-    "monolithic_with_fractures": case(
-        "`Coupling scheme = monolithic` on a fractured scene",
+    "monolithic_nodal_pair_without_fractures": case(
+        "`Coupling scheme = monolithic` with `Face bubbles = false` and no "
+        "fractures (the linear monolithic step needs the bubbles)",
         ["Nonlinear solver/Coupling scheme = monolithic is not available "
-         "with fractures yet: set it to fixed-stress or automatic"],
+         "without fractures and without Flow/Face bubbles yet: set it to "
+         "fixed-stress or automatic"],
         files={"scene.prm": section("Model", Model="poromechanics") +
-               SEGMENT + section("Nonlinear solver",
-                                 Coupling_scheme="monolithic")},
+               section("Flow", Face_bubbles="false") +
+               section("Nonlinear solver", Coupling_scheme="monolithic")},
         stage="level"),
     "coupling_scheme_unknown": case(
         "`Coupling scheme = newton`",
@@ -444,10 +446,14 @@ CASES = {
             "Nonlinear solver", Coupling_scheme="newton")}),
     "closed_fracture_impermeable_incompressible": case(
         "a closed fracture in an impermeable matrix with Fracture "
-        "compressibility = 0",
+        "compressibility = 0, by the fixed-stress split (its flow half has "
+        "no equation for a fracture pressure in contact; the monolithic "
+        "Newton, the default, solves the scene: the mechanics determines "
+        "that pressure)",
         ["is singular: some pressures are determined by nothing",
          "Set Flow/Fracture compressibility or Inverse Biot modulus > 0"],
         files={"scene.prm": section("Model", Model="poromechanics") +
+               section("Nonlinear solver", Coupling_scheme="fixed-stress") +
                SEGMENT + section("Flow", Permeability="0",
                                  Inverse_Biot_modulus="0",
                                  Fracture_compressibility="0",

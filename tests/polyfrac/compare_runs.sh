@@ -5,6 +5,10 @@
 #                        err_fracture_pressure of convergence.csv; the Newton
 #                        iterations and wall times may differ) to the
 #                        relative tolerance TOL, by numdiff;
+#   series=TOL           B's time series equals A's (step, time, time step,
+#                        contact states, mean aperture and fracture
+#                        pressure of time_series-level-0.csv; the
+#                        iterations may differ) to the relative tolerance TOL;
 #   smaller=COLUMN:F     on every level, B's error COLUMN is at most F times
 #                        A's (e.g. B adds a stabilisation A lacks);
 #   cheaper=COLUMN       B's last level has a smaller error COLUMN than A's
@@ -29,6 +33,9 @@ run() {
     --set "Output/Write VTU=false" "$@" > "$dir.log" 2>&1 ||
     { cat "$dir.log"; echo "run $dir failed"; exit 1; }
   cut -d, -f1-11 "$dir/convergence.csv" > "$dir.csv"
+  if [ -f "$dir/time_series-level-0.csv" ]; then
+    cut -d, -f1-3,7-11 "$dir/time_series-level-0.csv" > "$dir-series.csv"
+  fi
 }
 run a
 run b "$@"
@@ -46,6 +53,14 @@ case $check in
       fail "The runs differ (relative tolerance $tolerance)."
     echo "Same convergence table (relative tolerance $tolerance):" \
       "$(($(wc -l < "$a") - 1)) levels"
+    ;;
+  series=*)
+    tolerance=${check#series=}
+    a=$workdir/a-series.csv b=$workdir/b-series.csv
+    numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$a" "$b" ||
+      fail "The time series differ (relative tolerance $tolerance)."
+    echo "Same time series (relative tolerance $tolerance):" \
+      "$(($(wc -l < "$a") - 1)) steps"
     ;;
   smaller=*)
     spec=${check#smaller=} column=${spec%%:*} factor=${spec#*:}

@@ -5,6 +5,7 @@
 
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/app/poromechanical_newton.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
@@ -170,8 +171,14 @@ namespace PolyFrac
     StepReport
     monolithic_step(const double t_old, const double t_new, std::ostream &out);
 
+    /** The step of the monolithic scheme with fractures
+     * (PoromechanicalNewton). */
+    StepReport
+    newton_step(const double t_old, const double t_new, std::ostream &out);
+
     /** Throws naming the entry if Coupling scheme = monolithic where it
-     * does not apply (fractures, several ranks); whether it is used. */
+     * does not apply (several ranks; without fractures, without face
+     * bubbles); whether it is used. */
     bool
     use_monolithic_scheme() const;
 
@@ -190,6 +197,12 @@ namespace PolyFrac
       double pressure;
       /** Energy (J, per unit length in 2D): 1e-12 σ_ref² |Ω|/(λ + 2μ). */
       double energy;
+      /** The loads' own scales, σ_ref diam(Ω)/(λ + 2μ) and σ_ref: the
+       * floors of the monolithic Newton's increments (quadratic
+       * convergence takes them below the tolerance in one iteration, while
+       * in tight rock the pressure's round-off, M b times that of the
+       * volume, stays above a millionth of σ_ref times the tolerance). */
+      double load_displacement, load_stress;
     };
 
     /** The floors of the step at the time the elasticity is set to, with
@@ -287,6 +300,9 @@ namespace PolyFrac
     bool monolithic = false;
     /** Contact mechanics, when the scene has fractures. */
     std::unique_ptr<ContactMechanics<dim>> contact;
+    /** The monolithic Newton step, with fractures and the monolithic
+     * scheme. */
+    std::unique_ptr<PoromechanicalNewton<dim>> newton;
     /** L = b²/(λ + 2μ/d). */
     const double fixed_stress_coefficient;
     /** a_σ per fracture face. */

@@ -1,6 +1,7 @@
 #ifndef polyfrac_contact_contact_mechanics_h
 #define polyfrac_contact_contact_mechanics_h
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -151,6 +152,41 @@ namespace PolyFrac
     serialize(Archive &archive, const unsigned int)
     {
       archive &beta &n_beta_reductions;
+    }
+
+    /**
+     * For a Newton method on a larger system whose first unknowns are
+     * this one's (u, λ), e.g. the coupled poromechanical step
+     * (PoromechanicalNewton): adds the couplings of the displacement and
+     * multiplier rows to @p pattern (make_saddle_point_pattern()'s).
+     */
+    void
+    add_couplings(DynamicSparsityPattern &pattern) const;
+
+    /**
+     * For a Newton method on a larger system (see add_couplings()): at the
+     * unknowns @p x (u and λ first) under the loads of set_loads(), with
+     * the state at the start of the step @p reference (u^{n−1} of the
+     * Coulomb slip increment), writes the residual of the momentum and
+     * contact rows (zero on the Dirichlet dofs, which @p x must hold at
+     * their values, dirichlet_values()) into the first entries of
+     * @p residual, and adds their generalised Jacobian, A included, to
+     * @p jacobian; the Dirichlet rows become identity rows (whatever
+     * else the caller added to them). Returns the contact states at @p x.
+     * One rank only.
+     */
+    ContactStates
+    linearise(const Vector<double>       &x,
+              const MechanicalState<dim> &reference,
+              Vector<double>             &residual,
+              SparseMatrix<double>       &jacobian);
+
+    /** The Dirichlet values of the displacement dofs at the time of the
+     * last set_loads(), by dof. */
+    const std::map<types::global_dof_index, double> &
+    dirichlet_values() const
+    {
+      return dirichlet;
     }
 
     /** Total number of Newton iterations over the load steps. */

@@ -66,6 +66,14 @@ namespace PolyFrac
       return divergence;
     }
 
+    /** J: (J u)_σ = |σ| [[u]]_σ·n^+, one row per fracture face (empty
+     * without fracture faces). */
+    const SparseMatrix<double> &
+    normal_jump_matrix() const
+    {
+      return normal_jump;
+    }
+
   private:
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;

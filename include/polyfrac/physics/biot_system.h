@@ -19,11 +19,63 @@
 
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace PolyFrac
 {
   using namespace dealii;
+
+  /**
+   * Calls @p visit(row, p_K, value) for each entry of the volume coupling
+   * of the cell pressures p_K (numbered from @p p_offset in
+   * PressureDoFMap's order): with @p with_mechanics the entries |K| div_K
+   * of D on the displacement dofs (numbered from 0, BiotCoupling), and
+   * those of D_s on the face bubbles of @p bubbles (if not null; numbered
+   * from @p s_offset). The blocks −b D, −b D_s of the poromechanical
+   * systems (BiotSystem, PoromechanicalNewton) and their patterns.
+   */
+  template <int dim, typename Visitor>
+  void
+  for_each_volume_coupling(const BiotCoupling<dim>      &coupling,
+                           const FaceBubbles<dim>       *bubbles,
+                           const PressureDoFMap<dim>    &pressure_dofs,
+                           const types::global_dof_index s_offset,
+                           const types::global_dof_index p_offset,
+                           const bool                    with_mechanics,
+                           const Visitor                &visit)
+  {
+    const auto &divide = coupling.divergence_matrix();
+    for (unsigned int c = 0; c < divide.m(); ++c)
+      {
+        const types::global_dof_index p_K =
+          p_offset + pressure_dofs.cell_dof(c);
+        for (auto entry = divide.begin(c);
+             with_mechanics && entry != divide.end(c);
+             ++entry)
+          visit(entry->column(), p_K, entry->value());
+        if (!bubbles)
+          continue;
+        const auto &block = bubbles->cell_block(c);
+        for (unsigned int j = 0; j < block.bubbles.size(); ++j)
+          visit(s_offset + block.bubbles[j], p_K, block.divergence[j]);
+      }
+  }
+
+  /** Calls @p visit(row, column, entry) for each entry of the first
+   * @p n_rows rows of the sparsity pattern (or matrix) @p block, the row
+   * and column shifted by @p offset. */
+  template <typename BlockType, typename Visitor>
+  void
+  for_each_block_entry(const BlockType              &block,
+                       const types::global_dof_index n_rows,
+                       const types::global_dof_index offset,
+                       const Visitor                &visit)
+  {
+    for (types::global_dof_index row = 0; row < n_rows; ++row)
+      for (auto entry = block.begin(row); entry != block.end(row); ++entry)
+        visit(offset + row, offset + entry->column(), entry);
+  }
 
   /**
    * The implicit Euler step of poroelasticity as one symmetric saddle-point
@@ -121,6 +173,11 @@ namespace PolyFrac
                                 const MechanicalState<dim> &u_k,
                                 Vector<double>             &s,
                                 Vector<double>             &p);
+
+    /** The error message for a singular system in the unknowns named
+     * @p unknowns: which pressures nothing determines, and what to set. */
+    static std::string
+    singular_message(const std::string &unknowns);
 
     /** Number of unknowns of the system (prescribed ones included). */
     types::global_dof_index

@@ -57,6 +57,15 @@ namespace PolyFrac
      * PoromechanicsModel); it vanishes for a steady pressure.
      */
     std::vector<double> increment_mobility;
+    /**
+     * Whether the mass balances also hold the volume changes of the
+     * mechanics, solved together with the flow (the monolithic
+     * poromechanical step): b D u in the cells, the aperture on the
+     * fracture faces. Then every cell has an equation if b ≠ 0, and the
+     * mechanics determines the pressure where neither a prescribed
+     * pressure nor storage does.
+     */
+    bool volume_coupled = false;
   };
 
   /**
@@ -173,6 +182,27 @@ namespace PolyFrac
                     const std::vector<double> &apertures,
                     const Vector<double>      &pressure) const;
 
+    /** Global unknowns of fracture face @p i: p_{f,σ}, then its edges. */
+    std::vector<types::global_dof_index>
+    fracture_dofs(const unsigned int i) const;
+
+    /**
+     * ∂/∂d_σ of the equations of fracture face @p i and its edges in the
+     * step of @p data (assemble(): the rows of H p − h) at the pressures
+     * @p pressure, previous pressures @p previous and the apertures and
+     * fracture storage max(d, d_min) c_f of @p data: the cubic law's
+     * (C_σ'/η) (B_σ p_f) and, on p_{f,σ}, |σ| c_f (p_{f,σ} −
+     * p_{f,σ}^{n−1})/Δt; both vanish below the minimum aperture. The
+     * entries go with the unknowns @p local_dofs (p_{f,σ}, then its edges).
+     * The Jacobian of the aperture in a Newton method of the coupled step.
+     */
+    std::vector<double>
+    aperture_derivative(const unsigned int                    i,
+                        const FlowStepData                   &data,
+                        const Vector<double>                 &previous,
+                        const Vector<double>                 &pressure,
+                        std::vector<types::global_dof_index> &local_dofs) const;
+
     /** The Darcy velocity per cell, (1/|K|) Σ_σ F_{Kσ} (x̄_σ − x̄_K) (exact
      * for a constant velocity on planar faces). */
     std::vector<Tensor<1, dim>>
@@ -281,12 +311,10 @@ namespace PolyFrac
     std::vector<types::global_dof_index>
     cell_dofs(const unsigned int c) const;
 
-    /** Global unknowns of fracture face @p i: p_{f,σ}, then its edges. */
-    std::vector<types::global_dof_index>
-    fracture_dofs(const unsigned int i) const;
 
-    /** Whether cell @p c has an equation (K_m > 0 or c_K > 0). A cell
-     * with K_m = 0 exchanges nothing with the fractures. */
+    /** Whether cell @p c has an equation (K_m > 0, c_K > 0, or
+     * FlowStepData::volume_coupled with b ≠ 0). A cell with K_m = 0 exchanges
+     * nothing with the fractures. */
     bool
     active(const unsigned int c, const FlowStepData &data) const;
 

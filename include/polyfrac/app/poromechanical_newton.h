@@ -1,0 +1,181 @@
+#ifndef polyfrac_app_poromechanical_newton_h
+#define polyfrac_app_poromechanical_newton_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/base/parameters.h>
+#include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/dofs/dof_map.h>
+#include <polyfrac/dofs/pressure_dof_map.h>
+#include <polyfrac/physics/biot_coupling.h>
+#include <polyfrac/physics/face_bubbles.h>
+#include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/mechanical_state.h>
+
+#include <string>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The implicit Euler step of fractured poromechanics as one nonlinear
+   * system, solved by a semi-smooth Newton method (doc/scheme.md §10,
+   * "Monolithic Newton"): the unknowns x = (u, λ, s, p), the node-side
+   * displacements and fracture bubbles u, the multipliers λ (DoFMap), the
+   * normal face bubbles s (FaceBubbles, if any) and the HFV pressures p
+   * (PressureDoFMap), and the rows
+   *
+   * - momentum: A u + A_us s + Σ_σ |σ| λ_σ·[[v]]_σ − F − b Dᵀ p_m + Jᵀ p_f;
+   * - contact: the complementarity functions of ContactMechanics;
+   * - bubbles: A_su u + A_ss s − F_s − b D_sᵀ p_m;
+   * - mass, scaled by −Δt as in BiotSystem: −b D (u − u^{n−1}) − b D_s (s −
+   *   s^{n−1}) − Δt (H(d) p − h(d)) in the cells, with H, h the HFV step
+   *   (Flow::assemble()) at the apertures d = d_0 − [[u]]_n of x, the
+   *   fracture storage max(d, d_min) c_f and, on each fracture face, the
+   *   volume change |σ| (d − d^{n−1})/Δt.
+   *
+   * Each iteration assembles the generalised Jacobian of all rows: the
+   * contact states (ContactMechanics::linearise()), the Biot couplings D,
+   * D_s, J, and the aperture in the cubic law and the fracture storage
+   * (Flow::aperture_derivative()), so that the iteration converges
+   * quadratically once the contact states settle; it is solved by UMFPACK
+   * with the symmetric diagonal scaling of BiotSystem. The iteration stops
+   * when the contact states did not change and the relative increments of
+   * (u, s) and of (p, λ) are at most Nonlinear solver/Coupling tolerance,
+   * each relative to the larger of the unknowns and the floors the caller
+   * gives (the scale of the loads, so that a state at rest is converged at
+   * once). One rank only.
+   */
+  template <int dim>
+  class PoromechanicalNewton
+  {
+  public:
+    /** All arguments must outlive this object; @p bubbles may be null (no
+     * face bubbles: the nodal pair, with the pressure stabilisation in the
+     * step's FlowStepData). */
+    PoromechanicalNewton(const Parameters               &prm,
+                         const LevelDiscretization<dim> &discretization,
+                         const PressureDoFMap<dim>      &pressure_dofs,
+                         const Flow<dim>                &flow,
+                         const BiotCoupling<dim>        &coupling,
+                         const FaceBubbles<dim>         *bubbles,
+                         ContactMechanics<dim>          &contact);
+
+    /** What a step did. */
+    struct Result
+    {
+      /** Whether the step converged (else #failure says why). */
+      bool converged = false;
+      /** Newton iterations (each one linear solve). */
+      unsigned int iterations = 0;
+      /** The relative increment of each iteration. */
+      std::vector<double> increments;
+      /** Why it failed (empty if it converged). */
+      std::string failure;
+      /** The step's flow data at the solution (apertures, storage). */
+      FlowStepData data;
+    };
+
+    /**
+     * The step to @p data.time, @p data.time_step long, from (@p before,
+     * @p p_before), Newton starting from (@p guess, @p p_guess): the
+     * loads of the elasticity must be at @p data.time (Elasticity::
+     * set_time(), for the bubbles' loads), @p data holds the step's cell
+     * storage and sources (Flow::flow_step_data(), and the increment
+     * mobility without bubbles). The increments are relative to the
+     * larger of the unknowns and @p displacement_floor (u, s) and
+     * @p pressure_floor (p, λ). On success writes the state to @p after
+     * and @p p_after.
+     */
+    Result
+    step(const FlowStepData         &data,
+         const MechanicalState<dim> &before,
+         const Vector<double>       &p_before,
+         const MechanicalState<dim> &guess,
+         const Vector<double>       &p_guess,
+         const double                displacement_floor,
+         const double                pressure_floor,
+         MechanicalState<dim>       &after,
+         Vector<double>             &p_after);
+
+    /** Number of unknowns of the system (prescribed ones included). */
+    types::global_dof_index
+    n_dofs() const
+    {
+      return n_u + n_lambda + n_s + n_p;
+    }
+
+  private:
+    /** The pattern of the Jacobian. */
+    void
+    make_pattern();
+
+    /**
+     * The residual of @p x into @p residual and its Jacobian into
+     * #jacobian (prescribed pressures: identity rows, zero residual);
+     * @p data gets the apertures, fracture storage and volume change of
+     * @p x. Returns the contact states at @p x.
+     */
+    ContactStates
+    linearise(const Vector<double>       &x,
+              const MechanicalState<dim> &before,
+              const Vector<double>       &p_before,
+              const Vector<double>       &bubble_loads,
+              FlowStepData               &data,
+              Vector<double>             &residual);
+
+    /** Adds the Biot couplings of the cells (D, D_s) and of the fracture
+     * faces (J) to #jacobian, both ways, with their Jacobian scaling. */
+    void
+    add_biot_couplings();
+
+    /** Adds −Δt ∂(H p − h)/∂d ∂d/∂u on the fracture faces' flow rows
+     * (cubic law and storage) at @p x. */
+    void
+    add_aperture_derivatives(const FlowStepData   &data,
+                             const Vector<double> &p_before,
+                             const Vector<double> &p);
+
+    /** |σ| of fracture face @p i. */
+    double
+    fracture_face_measure(const unsigned int i) const;
+
+    /** The apertures d_0 − [[u]]_n of the displacement @p u per fracture
+     * face. */
+    std::vector<double>
+    apertures(const Vector<double> &u) const;
+
+    /** Solves #jacobian dx = −@p residual (scaled, UMFPACK). */
+    Vector<double>
+    solve(const Vector<double> &residual);
+
+    /** The unknowns (u, λ, s, p) of a state. */
+    Vector<double>
+    join(const MechanicalState<dim> &state, const Vector<double> &p) const;
+
+    const Parameters               &prm;
+    const LevelDiscretization<dim> &discretization;
+    const DoFMap<dim>              &dofs;
+    const PressureDoFMap<dim>      &pressure_dofs;
+    const Flow<dim>                &flow;
+    const BiotCoupling<dim>        &coupling;
+    const FaceBubbles<dim>         *bubbles;
+    ContactMechanics<dim>          &contact;
+    /** Sizes of the blocks u, λ, s (0 without bubbles) and p. */
+    const types::global_dof_index n_u, n_lambda, n_s, n_p;
+    SparsityPattern               sparsity;
+    SparseMatrix<double>          jacobian;
+    /** The flow block H of the last linearise(). */
+    SparsityPattern      flow_sparsity;
+    SparseMatrix<double> flow_matrix;
+    /** The prescribed pressures of the step (offset to x). */
+    AffineConstraints<double> pressure_constraints;
+  };
+} // namespace PolyFrac
+
+#endif

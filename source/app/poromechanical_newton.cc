@@ -1,0 +1,470 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <polyfrac/app/poromechanical_newton.h>
+#include <polyfrac/physics/biot_system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    /** max_k |dx_k| / max(max_k |x_k|, @p floor) over the entries
+     * [@p begin, @p end) (0 if both vanish). */
+    double
+    relative_increment(const Vector<double>         &dx,
+                       const Vector<double>         &x,
+                       const types::global_dof_index begin,
+                       const types::global_dof_index end,
+                       const double                  floor)
+    {
+      double step = 0, size = floor;
+      for (types::global_dof_index k = begin; k < end; ++k)
+        {
+          step = std::max(step, std::abs(dx(k)));
+          size = std::max(size, std::abs(x(k)));
+        }
+      return size > 0 ? step / size : 0.;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  PoromechanicalNewton<dim>::PoromechanicalNewton(
+    const Parameters               &prm,
+    const LevelDiscretization<dim> &discretization,
+    const PressureDoFMap<dim>      &pressure_dofs,
+    const Flow<dim>                &flow,
+    const BiotCoupling<dim>        &coupling,
+    const FaceBubbles<dim>         *bubbles,
+    ContactMechanics<dim>          &contact)
+    : prm(prm)
+    , discretization(discretization)
+    , dofs(*discretization.dofs)
+    , pressure_dofs(pressure_dofs)
+    , flow(flow)
+    , coupling(coupling)
+    , bubbles(bubbles)
+    , contact(contact)
+    , n_u(dofs.n_displacement_dofs())
+    , n_lambda(dim * dofs.n_bubbles())
+    , n_s(bubbles ? bubbles->n_bubbles() : 0)
+    , n_p(pressure_dofs.n_dofs())
+  {
+    AssertThrow(!dofs.is_distributed(),
+                ExcMessage("In <" + prm.file_name +
+                           ">: the monolithic Newton step of poromechanics "
+                           "with fractures is not yet available on several "
+                           "ranks: set Nonlinear solver/Coupling scheme = "
+                           "fixed-stress, or run on one rank."));
+    make_pattern();
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::make_pattern()
+  {
+    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
+    DynamicSparsityPattern        pattern(n_dofs());
+    contact.add_couplings(pattern);
+    if (bubbles)
+      bubbles->add_couplings(pattern, s0, true);
+    for_each_volume_coupling(coupling,
+                             bubbles,
+                             pressure_dofs,
+                             s0,
+                             p0,
+                             true,
+                             [&](const auto row, const auto p_K, double) {
+                               pattern.add(row, p_K);
+                               pattern.add(p_K, row);
+                             });
+    // The fracture pressure's load and the fracture volume (J, both ways);
+    // the aperture in the cubic law couples the face's flow unknowns (the
+    // face and its edges) with the dofs of its jump.
+    const auto &J = coupling.normal_jump_matrix();
+    for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
+      {
+        const std::vector<types::global_dof_index> local =
+          flow.fracture_dofs(i);
+        for (auto entry = J.begin(i); entry != J.end(i); ++entry)
+          {
+            pattern.add(entry->column(), p0 + local[0]);
+            for (const types::global_dof_index row : local)
+              pattern.add(p0 + row, entry->column());
+          }
+      }
+    DynamicSparsityPattern flow_pattern(n_p);
+    flow.make_pattern(flow_pattern);
+    for_each_block_entry(flow_pattern,
+                         n_p,
+                         p0,
+                         [&](const auto row, const auto column, const auto &) {
+                           pattern.add(row, column);
+                         });
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      pattern.add(i, i);
+    sparsity.copy_from(pattern);
+    jacobian.reinit(sparsity);
+    flow_sparsity.copy_from(flow_pattern);
+    flow_matrix.reinit(flow_sparsity);
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  PoromechanicalNewton<dim>::join(const MechanicalState<dim> &state,
+                                  const Vector<double>       &p) const
+  {
+    Vector<double> x(n_dofs());
+    for (types::global_dof_index k = 0; k < n_u; ++k)
+      x(k) = state.displacement(k);
+    for (unsigned int i = 0; i < state.multipliers.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        x(dofs.multiplier_dof(i, d)) = state.multipliers[i][d];
+    for (types::global_dof_index k = 0; k < n_s; ++k)
+      x(n_u + n_lambda + k) = state.face_bubbles(k);
+    for (types::global_dof_index k = 0; k < n_p; ++k)
+      x(n_u + n_lambda + n_s + k) = p(k);
+    return x;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::add_biot_couplings()
+  {
+    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
+    const double                  b = prm.flow.biot_coefficient;
+    for_each_volume_coupling(coupling,
+                             bubbles,
+                             pressure_dofs,
+                             s0,
+                             p0,
+                             true,
+                             [&](const auto   row,
+                                 const auto   p_K,
+                                 const double value) {
+                               jacobian.add(row, p_K, -b * value);
+                               jacobian.add(p_K, row, -b * value);
+                             });
+    // Momentum: +Jᵀ p_f; fracture mass: −Δt |σ| (d − d^{n−1})/Δt with
+    // d = d_0 − (J u)_σ/|σ|, i.e. +J u.
+    const auto &J = coupling.normal_jump_matrix();
+    for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
+      {
+        const types::global_dof_index p_f =
+          p0 + pressure_dofs.fracture_face_dof(i);
+        for (auto entry = J.begin(i); entry != J.end(i); ++entry)
+          {
+            jacobian.add(entry->column(), p_f, entry->value());
+            jacobian.add(p_f, entry->column(), entry->value());
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::add_aperture_derivatives(
+    const FlowStepData   &data,
+    const Vector<double> &p_before,
+    const Vector<double> &p)
+  {
+    // −Δt ∂(H p − h)_a/∂d_σ ∂d_σ/∂u, ∂d_σ/∂u = −J_σ/|σ|.
+    const types::global_dof_index        p0 = n_u + n_lambda + n_s;
+    const auto                          &J  = coupling.normal_jump_matrix();
+    std::vector<types::global_dof_index> local;
+    for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
+      {
+        const std::vector<double> derivative =
+          flow.aperture_derivative(i, data, p_before, p, local);
+        const double scale = data.time_step / fracture_face_measure(i);
+        for (auto entry = J.begin(i); entry != J.end(i); ++entry)
+          for (unsigned int a = 0; a < local.size(); ++a)
+            if (derivative[a] != 0)
+              jacobian.add(p0 + local[a],
+                           entry->column(),
+                           scale * derivative[a] * entry->value());
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  PoromechanicalNewton<dim>::fracture_face_measure(const unsigned int i) const
+  {
+    const auto &network = *discretization.network;
+    return discretization.geometry->faces[network.fracture_faces[i].face]
+      .measure;
+  }
+
+
+
+  template <int dim>
+  ContactStates
+  PoromechanicalNewton<dim>::linearise(const Vector<double>       &x,
+                                       const MechanicalState<dim> &before,
+                                       const Vector<double>       &p_before,
+                                       const Vector<double>       &bubble_loads,
+                                       FlowStepData               &data,
+                                       Vector<double>             &residual)
+  {
+    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
+    const double                  b = prm.flow.biot_coefficient;
+    Vector<double>                u(n_u), s(n_s), p(n_p);
+    std::copy(x.begin(), x.begin() + n_u, u.begin());
+    std::copy(x.begin() + s0, x.begin() + p0, s.begin());
+    std::copy(x.begin() + p0, x.end(), p.begin());
+    const std::vector<double> p_m = flow.cell_pressures(p);
+    residual.reinit(n_dofs());
+    jacobian = 0;
+
+    // Bubbles: A_su u + A_ss s − F_s − b D_sᵀ p_m; their pull A_us s joins
+    // the pressure load of the momentum rows.
+    Vector<double> load =
+      coupling.pressure_load(p_m, b, flow.fracture_pressures(p));
+    if (bubbles)
+      {
+        Vector<double> pull(n_u), As(n_s);
+        bubbles->vmult(u, s, pull, As);
+        load -= pull;
+        for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+          {
+            const auto &block = bubbles->cell_block(c);
+            for (unsigned int j = 0; j < block.bubbles.size(); ++j)
+              As(block.bubbles[j]) -= b * block.divergence[j] * p_m[c];
+          }
+        for (types::global_dof_index k = 0; k < n_s; ++k)
+          residual(s0 + k) = As(k) - bubble_loads(k);
+        bubbles->add_stiffness(jacobian, s0, true);
+      }
+
+    // Mass: the step's data at the apertures of u.
+    const std::vector<double> d   = apertures(u);
+    const std::vector<double> d_0 = apertures(before.displacement);
+    for (unsigned int i = 0; i < d.size(); ++i)
+      {
+        data.apertures[i]        = d[i];
+        data.fracture_storage[i] = flow.fracture_fluid_storage(d[i]);
+        data.fracture_rhs[i]     = -(d[i] - d_0[i]) / data.time_step;
+      }
+    flow_matrix = 0;
+    Vector<double> h(n_p);
+    flow.assemble(data, p_before, AffineConstraints<double>(), flow_matrix, h);
+    Vector<double> Hp(n_p);
+    flow_matrix.vmult(Hp, p);
+    Hp -= h;
+    const std::vector<double> volume = coupling.volume_changes(u);
+    const std::vector<double> volume_0 =
+      coupling.volume_changes(before.displacement);
+    std::vector<double> bubble_volume(volume.size()),
+      bubble_volume_0(volume.size());
+    if (bubbles)
+      {
+        bubble_volume   = bubbles->volume_changes(s);
+        bubble_volume_0 = bubbles->volume_changes(before.face_bubbles);
+      }
+    for (types::global_dof_index k = 0; k < n_p; ++k)
+      residual(p0 + k) = -data.time_step * Hp(k);
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      residual(p0 + pressure_dofs.cell_dof(c)) -=
+        b * (volume[c] - volume_0[c] + bubble_volume[c] - bubble_volume_0[c]);
+    for_each_block_entry(
+      flow_matrix,
+      n_p,
+      p0,
+      [&](const auto row, const auto column, const auto &entry) {
+        jacobian.add(row, column, -data.time_step * entry->value());
+      });
+    add_biot_couplings();
+    add_aperture_derivatives(data, p_before, p);
+
+    // Momentum and contact (A, the faces, the Dirichlet rows), last: the
+    // Dirichlet rows drop what the couplings put there.
+    contact.set_loads(data.time, load);
+    const ContactStates states =
+      contact.linearise(x, before, residual, jacobian);
+
+    // Prescribed pressures: identity rows, scaled like the flow block.
+    for (const auto &line : pressure_constraints.get_lines())
+      {
+        const types::global_dof_index row = p0 + line.index;
+        const double                  diagonal =
+          std::max(std::abs(jacobian.diag_element(row)), 1e-300);
+        for (auto entry = jacobian.begin(row); entry != jacobian.end(row);
+             ++entry)
+          entry->value() = 0;
+        jacobian.set(row, row, diagonal);
+        residual(row) = 0;
+      }
+    return states;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  PoromechanicalNewton<dim>::apertures(const Vector<double> &u) const
+  {
+    std::vector<double> d = coupling.normal_jumps(u);
+    for (double &value : d)
+      value = prm.flow.aperture_at_contact - value;
+    return d;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  PoromechanicalNewton<dim>::solve(const Vector<double> &residual)
+  {
+    // The symmetric diagonal scaling of BiotSystem (unit diagonals where
+    // there is one; a row without, the multipliers of faces in contact,
+    // is scaled by its largest entry).
+    Vector<double> scaling(n_dofs());
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      {
+        double size = std::abs(jacobian.diag_element(i));
+        if (size == 0)
+          for (auto entry = jacobian.begin(i); entry != jacobian.end(i);
+               ++entry)
+            size = std::max(size, std::abs(entry->value()));
+        scaling(i) = size > 0 ? 1 / std::sqrt(size) : 1.;
+      }
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
+        entry->value() *= scaling(i) * scaling(entry->column());
+    Vector<double> rhs(residual), dx(n_dofs());
+    rhs *= -1.;
+    rhs.scale(scaling);
+    SparseDirectUMFPACK direct;
+    try
+      {
+        direct.initialize(jacobian);
+      }
+    catch (const std::exception &)
+      {
+        AssertThrow(false,
+                    ExcMessage(BiotSystem<dim>::singular_message(
+                      "displacement, multipliers, face bubbles, pressures")));
+      }
+    direct.vmult(dx, rhs);
+    dx.scale(scaling);
+    return dx;
+  }
+
+
+
+  template <int dim>
+  typename PoromechanicalNewton<dim>::Result
+  PoromechanicalNewton<dim>::step(const FlowStepData         &step_data,
+                                  const MechanicalState<dim> &before,
+                                  const Vector<double>       &p_before,
+                                  const MechanicalState<dim> &guess,
+                                  const Vector<double>       &p_guess,
+                                  const double          displacement_floor,
+                                  const double          pressure_floor,
+                                  MechanicalState<dim> &after,
+                                  Vector<double>       &p_after)
+  {
+    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
+    Result                        result;
+    result.data         = step_data;
+    FlowStepData &data  = result.data;
+    data.volume_coupled = true;
+    pressure_constraints.clear();
+    flow.make_constraints(data, p_before, pressure_constraints);
+    const Vector<double> bubble_loads =
+      bubbles ? bubbles->loads() : Vector<double>();
+
+    // The start: the guess, with the Dirichlet data and the prescribed
+    // pressures of the step.
+    Vector<double> x = join(guess, p_guess);
+    contact.set_loads(data.time, Vector<double>());
+    for (const auto &[dof, value] : contact.dirichlet_values())
+      x(dof) = value;
+    for (const auto &line : pressure_constraints.get_lines())
+      x(p0 + line.index) = line.inhomogeneity;
+
+    // The states of the guess: a state at rest keeps them and converges in
+    // one iteration.
+    ContactStates  previous_states = guess.contact;
+    Vector<double> residual;
+    try
+      {
+        for (unsigned int k = 1; k <= prm.nonlinear.max_iterations; ++k)
+          {
+            const ContactStates states =
+              linearise(x, before, p_before, bubble_loads, data, residual);
+            const Vector<double> dx = solve(residual);
+            x += dx;
+            const double increment =
+              std::max(relative_increment(dx, x, 0, n_u, displacement_floor),
+                       relative_increment(dx, x, s0, p0, displacement_floor)) +
+              std::max(relative_increment(dx, x, p0, n_dofs(), pressure_floor),
+                       relative_increment(dx, x, n_u, s0, pressure_floor));
+            result.increments.push_back(increment);
+            result.iterations = k;
+            const bool settled =
+              states.normal == previous_states.normal &&
+              states.tangential == previous_states.tangential;
+            previous_states = states;
+            if (settled && increment <= prm.nonlinear.coupling_tolerance)
+              {
+                result.converged = true;
+                break;
+              }
+          }
+      }
+    catch (const std::exception &e)
+      {
+        result.failure = "the Newton step of the coupled system failed at "
+                         "iteration " +
+                         std::to_string(result.iterations + 1) + ": " +
+                         e.what();
+        return result;
+      }
+    if (!result.converged)
+      {
+        std::ostringstream what;
+        what << "the monolithic Newton iteration did not converge in "
+             << prm.nonlinear.max_iterations
+             << " iterations (Nonlinear solver/Maximum iterations; last "
+                "relative increment "
+             << result.increments.back() << ", tolerance "
+             << prm.nonlinear.coupling_tolerance << ").";
+        result.failure = what.str();
+        return result;
+      }
+
+    // The state at the solution, with its contact states and step data.
+    after = before;
+    after.contact =
+      linearise(x, before, p_before, bubble_loads, data, residual);
+    std::copy(x.begin(), x.begin() + n_u, after.displacement.begin());
+    for (unsigned int i = 0; i < after.multipliers.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        after.multipliers[i][d] = x(dofs.multiplier_dof(i, d));
+    after.face_bubbles.reinit(n_s);
+    std::copy(x.begin() + s0, x.begin() + p0, after.face_bubbles.begin());
+    p_after.reinit(n_p);
+    std::copy(x.begin() + p0, x.end(), p_after.begin());
+    return result;
+  }
+
+
+
+  template class PoromechanicalNewton<2>;
+  template class PoromechanicalNewton<3>;
+} // namespace PolyFrac
