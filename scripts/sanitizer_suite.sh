@@ -78,6 +78,11 @@ long_tests=(
   # Release 29 s, 2 ranks; the checkpoint path stays through io/restart
   # (serial, 6 steps in this suite).
   io/restart_2_ranks
+  # Release 3.9 s: the slip scene twice (fixed-stress and monolithic); the
+  # monolithic Newton stays through poromechanics_2d_slip (the default
+  # scheme), the fixed-stress loop through that scene's equilibrium start
+  # (15 iterations) and poromechanics_at_rest_fixed_stress.
+  polyfrac/equal_runs_poromechanics_newton
   # Debug wall times of a clean-clone .ci/run on 2026-11-26 (loaded by a
   # build beside it), left out after it took 36 minutes: elasticity stays
   # through polyfrac/smooth_* and the 2-rank b2_3d_elasticity pair, the
