@@ -83,6 +83,13 @@ long_tests=(
   # scheme), the fixed-stress loop through that scene's equilibrium start
   # (15 iterations) and poromechanics_at_rest_fixed_stress.
   polyfrac/equal_runs_poromechanics_newton
+  # Debug + sanitizer wall times of 2026-11-26 on a clean clone (idle
+  # machine, ctest -j2; that CI run took 1,753 s in all): every shipped
+  # parameter file parsed (the parser stays through bad_parameters_01) and
+  # the smoothly distorted hexahedra (3D hexahedra stay through
+  # b2_3d_hexes).
+  base/shipped_parameter_files_01 # 31 s
+  polyfrac/smooth_3d_distorted # 30 s
   # Debug wall times of a clean-clone .ci/run on 2026-11-26 (loaded by a
   # build beside it), left out after it took 36 minutes: elasticity stays
   # through polyfrac/smooth_* and the 2-rank b2_3d_elasticity pair, the
