@@ -375,6 +375,7 @@ namespace PolyFrac
                                   const Vector<double>       &p_guess,
                                   const double          displacement_floor,
                                   const double          pressure_floor,
+                                  const Pressures       pressures,
                                   MechanicalState<dim> &after,
                                   Vector<double>       &p_after)
   {
@@ -384,7 +385,14 @@ namespace PolyFrac
     FlowStepData &data  = result.data;
     data.volume_coupled = true;
     pressure_constraints.clear();
-    flow.make_constraints(data, p_before, pressure_constraints);
+    if (pressures == Pressures::held)
+      for (types::global_dof_index i = 0; i < n_p; ++i)
+        {
+          pressure_constraints.add_line(i);
+          pressure_constraints.set_inhomogeneity(i, p_before(i));
+        }
+    else
+      flow.make_constraints(data, p_before, pressure_constraints);
     const Vector<double> bubble_loads =
       bubbles ? bubbles->loads() : Vector<double>();
 
@@ -416,11 +424,17 @@ namespace PolyFrac
                        relative_increment(dx, x, n_u, s0, pressure_floor));
             result.increments.push_back(increment);
             result.iterations = k;
-            const bool settled =
+            // Converged when the step was taken with settled states, or
+            // when a second step in a row moved nothing: faces at the
+            // Coulomb bound (|b_τ| = g to round-off) may flip between
+            // stick and slip, both of which the solution satisfies.
+            const double tolerance = prm.nonlinear.coupling_tolerance;
+            const bool   settled =
               states.normal == previous_states.normal &&
               states.tangential == previous_states.tangential;
-            previous_states = states;
-            if (settled && increment <= prm.nonlinear.coupling_tolerance)
+            const bool again = k > 1 && result.increments[k - 2] <= tolerance;
+            previous_states  = states;
+            if (increment <= tolerance && (settled || again))
               {
                 result.converged = true;
                 break;

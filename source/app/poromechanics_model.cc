@@ -513,6 +513,8 @@ namespace PolyFrac
     if (!prm.time.equilibrium_start || prm.exact.analytic_solution != "none")
       return std::nullopt;
     elasticity.set_time(0);
+    if (newton)
+      return newton_equilibrium(out);
     // The pressures are held: the "flow half" only puts the bubbles at
     // rest under the mechanics iterate.
     Vector<double> bubble_loads;
@@ -539,20 +541,62 @@ namespace PolyFrac
     Vector<double>       p_k       = pressure;
     StepReport report = couple(0, held, scales(pressure), tolerance, u_k, p_k);
     AssertThrow(report.converged,
-                ExcMessage("In <" + prm.file_name +
-                           ">: the equilibrium start (Time/Equilibrium start "
-                           "= true: the mechanics at t = 0 under the initial "
-                           "stress, the loads at t = 0 and the initial "
-                           "pressures) failed: " +
-                           report.failure +
-                           " Check that the initial stress and the loads at "
-                           "t = 0 can be in equilibrium, or set Equilibrium "
-                           "start = false to start from u = 0."));
+                ExcMessage(equilibrium_failure(report.failure)));
     state          = u_k;
     initial_volume = volume_changes(state);
     summarise_fractures(report);
     out << "Step 0, equilibrium at t = 0: " << *report.coupling_iterations
         << " coupling iterations";
+    print_contact_summary(report, out);
+    return report;
+  }
+
+
+
+  template <int dim>
+  std::string
+  PoromechanicsModel<dim>::equilibrium_failure(const std::string &why) const
+  {
+    return "In <" + prm.file_name +
+           ">: the equilibrium start (Time/Equilibrium start = true: the "
+           "mechanics at t = 0 under the initial stress, the loads at t = 0 "
+           "and the initial pressures) failed: " +
+           why +
+           " Check that the initial stress and the loads at t = 0 can be in "
+           "equilibrium, or set Equilibrium start = false to start from "
+           "u = 0.";
+  }
+
+
+
+  template <int dim>
+  StepReport
+  PoromechanicsModel<dim>::newton_equilibrium(std::ostream &out)
+  {
+    // The mass balances are held, so the step length is not used.
+    const Scales         scale = scales(pressure);
+    MechanicalState<dim> u_new;
+    Vector<double>       p_new;
+    const auto           result = newton->step(flow.flow_step_data(0, 1),
+                                     state,
+                                     pressure,
+                                     state,
+                                     pressure,
+                                     scale.load_displacement,
+                                     scale.load_stress,
+                                     Newton::Pressures::held,
+                                     u_new,
+                                     p_new);
+    AssertThrow(result.converged,
+                ExcMessage(equilibrium_failure(result.failure)));
+    state          = u_new;
+    initial_volume = volume_changes(state);
+    StepReport report;
+    report.coupling_iterations = 1;
+    report.newton_iterations   = result.iterations;
+    report.coupling_increments = result.increments;
+    summarise_fractures(report);
+    out << "Step 0, equilibrium at t = 0: monolithic";
     print_contact_summary(report, out);
     return report;
   }
@@ -747,6 +791,7 @@ namespace PolyFrac
                                      pressure,
                                      scale.load_displacement,
                                      scale.load_stress,
+                                     Newton::Pressures::solved,
                                      u_new,
                                      p_new);
     StepReport           report;

@@ -3,14 +3,13 @@
 // anisotropic confinement that makes it slip, Coulomb contact) without its
 // injection. Step 0 brings the mechanics to equilibrium at t = 0 with the
 // initial pressures held: the fault slips there, so step 0 needs several
-// coupling iterations (the face bubbles are put at rest under each
-// mechanics iterate). After it nothing drives the scene, and the first step
-// must find it at rest: the displacement unchanged to 1e-10 of its size,
-// the face bubbles to 1e-8, the pressures below 1e-3 Pa (1e-9 of the
-// loads). (The step may take several coupling iterations for that: its
-// stopping test measures pressure increments against 1e-6 of the loads, and
-// a displacement at the tolerance of step 0 is a pressure of a few 1e-5 Pa
-// in this tight rock.) Without the
+// Newton iterations (the default, monolithic scheme with the pressures
+// held). After it nothing drives the scene, and the first step must find it
+// at rest: the displacement unchanged to 1e-10 of its size, the face
+// bubbles to 1e-8, the pressures below 1e-3 Pa (1e-9 of the loads). (The
+// step may take several Newton iterations for that: the faces slip at the
+// Coulomb bound, and their states settle between stick and slip.) Without
+// the
 // equilibrium start the same first step is where the confinement is
 // switched on: the rock moves and the pore pressure responds. Asserted
 // with and without the face bubbles (the nodal pair with δ = 1/4).
@@ -55,7 +54,7 @@ namespace
     PoromechanicsModel<2>           model(prm, discretization);
     const std::optional<StepReport> start = model.start_in_equilibrium(log);
     AssertThrow(start && start->converged, ExcInternalError());
-    AssertThrow(*start->n_slip > 0 && *start->coupling_iterations > 1,
+    AssertThrow(*start->n_slip > 0 && *start->newton_iterations > 1,
                 ExcMessage("step 0 should make the fault slip"));
     const MechanicalState<2> equilibrium = model.mechanical_state();
     const Vector<double>     p_start     = model.pressures();
@@ -68,8 +67,8 @@ namespace
                                      equilibrium.face_bubbles) :
                               0.;
     std::cout << (face_bubbles ? "face bubbles" : "nodal pair")
-              << ": step 0 takes " << *start->coupling_iterations
-              << " coupling iterations, faces slipping " << *start->n_slip
+              << ": step 0 takes " << *start->newton_iterations
+              << " Newton iterations, faces slipping " << *start->n_slip
               << "; after step 1 |du|/|u| "
               << (u_change < 1e-10 ? "< 1e-10" : ">= 1e-10") << ", |ds|/|s| "
               << (s_change < 1e-8 ? "< 1e-8" : ">= 1e-8") << ", |p| "

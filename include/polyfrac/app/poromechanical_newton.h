@@ -45,7 +45,9 @@ namespace PolyFrac
    * (Flow::aperture_derivative()), so that the iteration converges
    * quadratically once the contact states settle; it is solved by UMFPACK
    * with the symmetric diagonal scaling of BiotSystem. The iteration stops
-   * when the contact states did not change and the relative increments of
+   * when the contact states did not change (or, for faces at the Coulomb
+   * bound that flip between stick and slip, in the second iteration in a
+   * row within the tolerance) and the relative increments of
    * (u, s) and of (p, λ) are at most Nonlinear solver/Coupling tolerance,
    * each relative to the larger of the unknowns and the floors the caller
    * gives (the scale of the loads, so that a state at rest is converged at
@@ -81,6 +83,17 @@ namespace PolyFrac
       FlowStepData data;
     };
 
+    /** Whether a step solves for the pressures. */
+    enum class Pressures
+    {
+      /** The coupled step. */
+      solved,
+      /** The pressures stay at the previous ones and the mass balances are
+       * not solved: the mechanics (contact, bubbles) under given pressures,
+       * e.g. the equilibrium start (Time/Equilibrium start). */
+      held
+    };
+
     /**
      * The step to @p data.time, @p data.time_step long, from (@p before,
      * @p p_before), Newton starting from (@p guess, @p p_guess): the
@@ -89,8 +102,9 @@ namespace PolyFrac
      * storage and sources (Flow::flow_step_data(), and the increment
      * mobility without bubbles). The increments are relative to the
      * larger of the unknowns and @p displacement_floor (u, s) and
-     * @p pressure_floor (p, λ). On success writes the state to @p after
-     * and @p p_after.
+     * @p pressure_floor (p, λ). With Pressures::held the pressures stay
+     * @p p_before (and @p data.time_step is not used). On success writes
+     * the state to @p after and @p p_after.
      */
     Result
     step(const FlowStepData         &data,
@@ -100,6 +114,7 @@ namespace PolyFrac
          const Vector<double>       &p_guess,
          const double                displacement_floor,
          const double                pressure_floor,
+         const Pressures             pressures,
          MechanicalState<dim>       &after,
          Vector<double>             &p_after);
 

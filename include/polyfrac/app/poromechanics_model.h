@@ -171,6 +171,19 @@ namespace PolyFrac
     StepReport
     monolithic_step(const double t_old, const double t_new, std::ostream &out);
 
+    /** The monolithic Newton step of PoromechanicalNewton. */
+    using Newton = PoromechanicalNewton<dim>;
+
+    /** The message of a failed equilibrium start, failed because of
+     * @p why. */
+    std::string
+    equilibrium_failure(const std::string &why) const;
+
+    /** start_in_equilibrium() by the monolithic Newton method with the
+     * pressures held. */
+    StepReport
+    newton_equilibrium(std::ostream &out);
+
     /** The step of the monolithic scheme with fractures
      * (PoromechanicalNewton). */
     StepReport
@@ -302,7 +315,7 @@ namespace PolyFrac
     std::unique_ptr<ContactMechanics<dim>> contact;
     /** The monolithic Newton step, with fractures and the monolithic
      * scheme. */
-    std::unique_ptr<PoromechanicalNewton<dim>> newton;
+    std::unique_ptr<Newton> newton;
     /** L = b²/(λ + 2μ/d). */
     const double fixed_stress_coefficient;
     /** a_σ per fracture face. */
