@@ -554,6 +554,29 @@ namespace PolyFrac
 
 
   template <int dim>
+  typename PoromechanicsModel<dim>::Newton::Result
+  PoromechanicsModel<dim>::newton_step_from_state(
+    const FlowStepData              &data,
+    const typename Newton::Pressures pressures,
+    MechanicalState<dim>            &u_new,
+    Vector<double>                  &p_new)
+  {
+    const Scales scale = scales(pressure);
+    return newton->step(data,
+                        state,
+                        pressure,
+                        state,
+                        pressure,
+                        scale.load_displacement,
+                        scale.load_stress,
+                        pressures,
+                        u_new,
+                        p_new);
+  }
+
+
+
+  template <int dim>
   std::string
   PoromechanicsModel<dim>::equilibrium_failure(const std::string &why) const
   {
@@ -574,19 +597,12 @@ namespace PolyFrac
   PoromechanicsModel<dim>::newton_equilibrium(std::ostream &out)
   {
     // The mass balances are held, so the step length is not used.
-    const Scales         scale = scales(pressure);
     MechanicalState<dim> u_new;
     Vector<double>       p_new;
-    const auto           result = newton->step(flow.flow_step_data(0, 1),
-                                     state,
-                                     pressure,
-                                     state,
-                                     pressure,
-                                     scale.load_displacement,
-                                     scale.load_stress,
-                                     Newton::Pressures::held,
-                                     u_new,
-                                     p_new);
+    const auto result = newton_step_from_state(flow.flow_step_data(0, 1),
+                                               Newton::Pressures::held,
+                                               u_new,
+                                               p_new);
     AssertThrow(result.converged,
                 ExcMessage(equilibrium_failure(result.failure)));
     state          = u_new;
@@ -784,17 +800,9 @@ namespace PolyFrac
       data.increment_mobility = increment_mobility(time_step);
     MechanicalState<dim> u_new;
     Vector<double>       p_new;
-    const auto           result = newton->step(data,
-                                     state,
-                                     pressure,
-                                     state,
-                                     pressure,
-                                     scale.load_displacement,
-                                     scale.load_stress,
-                                     Newton::Pressures::solved,
-                                     u_new,
-                                     p_new);
-    StepReport           report;
+    const auto           result =
+      newton_step_from_state(data, Newton::Pressures::solved, u_new, p_new);
+    StepReport report;
     report.coupling_iterations = 1;
     report.newton_iterations   = result.iterations;
     report.coupling_increments = result.increments;

@@ -174,6 +174,14 @@ namespace PolyFrac
     /** The monolithic Newton step of PoromechanicalNewton. */
     using Newton = PoromechanicalNewton<dim>;
 
+    /** PoromechanicalNewton::step() of @p data from the current state,
+     * which is also the guess, with the floors of scales(). */
+    typename Newton::Result
+    newton_step_from_state(const FlowStepData              &data,
+                           const typename Newton::Pressures pressures,
+                           MechanicalState<dim>            &u_new,
+                           Vector<double>                  &p_new);
+
     /** The message of a failed equilibrium start, failed because of
      * @p why. */
     std::string
