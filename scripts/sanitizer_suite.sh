@@ -90,6 +90,14 @@ long_tests=(
   # b2_3d_hexes).
   base/shipped_parameter_files_01 # 31 s
   polyfrac/smooth_3d_distorted # 30 s
+  # The same, clean clone of 703ef38 (1,808 s in all: 620 + 1,160 + 28).
+  # Affine exactness of the flow stays through hfv_exactness_01 and the
+  # flow scenes, gmsh input through mesh/gmsh_03, the weights (their
+  # non-negative fit included) through every scene and the agglomerated
+  # ones (smooth_2d_agglomerated, smooth_3d_agglomerated).
+  physics/flow_affine_01 # 53 s
+  mesh/gmsh_01 # 35 s
+  discretization/affine_exactness_01 # 38 s
   # Debug wall times of a clean-clone .ci/run on 2026-11-26 (loaded by a
   # build beside it), left out after it took 36 minutes: elasticity stays
   # through polyfrac/smooth_* and the 2-rank b2_3d_elasticity pair, the
