@@ -213,12 +213,10 @@ namespace PolyFrac
 
   template <int dim>
   ContactStates
-  PoromechanicalNewton<dim>::linearise(const Vector<double>       &x,
-                                       const MechanicalState<dim> &before,
-                                       const Vector<double>       &p_before,
-                                       const Vector<double>       &bubble_loads,
-                                       FlowStepData               &data,
-                                       Vector<double>             &residual)
+  PoromechanicalNewton<dim>::linearise(const Vector<double> &x,
+                                       const StepStart      &start,
+                                       FlowStepData         &data,
+                                       Vector<double>       &residual)
   {
     const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
     const double                  b = prm.flow.biot_coefficient;
@@ -246,40 +244,31 @@ namespace PolyFrac
               As(block.bubbles[j]) -= b * block.divergence[j] * p_m[c];
           }
         for (types::global_dof_index k = 0; k < n_s; ++k)
-          residual(s0 + k) = As(k) - bubble_loads(k);
+          residual(s0 + k) = As(k) - start.bubble_loads(k);
         bubbles->add_stiffness(jacobian, s0, true);
       }
 
     // Mass: the step's data at the apertures of u.
-    const std::vector<double> d   = apertures(u);
-    const std::vector<double> d_0 = apertures(before.displacement);
+    const std::vector<double> d = apertures(u);
     for (unsigned int i = 0; i < d.size(); ++i)
       {
         data.apertures[i]        = d[i];
         data.fracture_storage[i] = flow.fracture_fluid_storage(d[i]);
-        data.fracture_rhs[i]     = -(d[i] - d_0[i]) / data.time_step;
+        data.fracture_rhs[i] = -(d[i] - start.apertures[i]) / data.time_step;
       }
     flow_matrix = 0;
     Vector<double> h(n_p);
-    flow.assemble(data, p_before, AffineConstraints<double>(), flow_matrix, h);
+    flow.assemble(
+      data, start.pressures, AffineConstraints<double>(), flow_matrix, h);
     Vector<double> Hp(n_p);
     flow_matrix.vmult(Hp, p);
     Hp -= h;
-    const std::vector<double> volume = coupling.volume_changes(u);
-    const std::vector<double> volume_0 =
-      coupling.volume_changes(before.displacement);
-    std::vector<double> bubble_volume(volume.size()),
-      bubble_volume_0(volume.size());
-    if (bubbles)
-      {
-        bubble_volume   = bubbles->volume_changes(s);
-        bubble_volume_0 = bubbles->volume_changes(before.face_bubbles);
-      }
+    const std::vector<double> volume = volume_changes(u, s);
     for (types::global_dof_index k = 0; k < n_p; ++k)
       residual(p0 + k) = -data.time_step * Hp(k);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
       residual(p0 + pressure_dofs.cell_dof(c)) -=
-        b * (volume[c] - volume_0[c] + bubble_volume[c] - bubble_volume_0[c]);
+        b * (volume[c] - start.volume[c]);
     for_each_block_entry(
       flow_matrix,
       n_p,
@@ -288,13 +277,13 @@ namespace PolyFrac
         jacobian.add(row, column, -data.time_step * entry->value());
       });
     add_biot_couplings();
-    add_aperture_derivatives(data, p_before, p);
+    add_aperture_derivatives(data, start.pressures, p);
 
     // Momentum and contact (A, the faces, the Dirichlet rows), last: the
     // Dirichlet rows drop what the couplings put there.
     contact.set_loads(data.time, load);
     const ContactStates states =
-      contact.linearise(x, before, residual, jacobian);
+      contact.linearise(x, start.state, residual, jacobian);
 
     // Prescribed pressures: identity rows, scaled like the flow block.
     for (const auto &line : pressure_constraints.get_lines())
@@ -309,6 +298,23 @@ namespace PolyFrac
         residual(row) = 0;
       }
     return states;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  PoromechanicalNewton<dim>::volume_changes(const Vector<double> &u,
+                                            const Vector<double> &s) const
+  {
+    std::vector<double> volume = coupling.volume_changes(u);
+    if (bubbles)
+      {
+        const std::vector<double> bubble_volume = bubbles->volume_changes(s);
+        for (unsigned int c = 0; c < volume.size(); ++c)
+          volume[c] += bubble_volume[c];
+      }
+    return volume;
   }
 
 
@@ -393,8 +399,13 @@ namespace PolyFrac
         }
     else
       flow.make_constraints(data, p_before, pressure_constraints);
-    const Vector<double> bubble_loads =
-      bubbles ? bubbles->loads() : Vector<double>();
+    // What the iterations share: the start of the step and the loads.
+    const StepStart start{before,
+                          p_before,
+                          bubbles ? bubbles->loads() : Vector<double>(),
+                          apertures(before.displacement),
+                          volume_changes(before.displacement,
+                                         before.face_bubbles)};
 
     // The start: the guess, with the Dirichlet data and the prescribed
     // pressures of the step.
@@ -413,9 +424,8 @@ namespace PolyFrac
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_iterations; ++k)
           {
-            const ContactStates states =
-              linearise(x, before, p_before, bubble_loads, data, residual);
-            const Vector<double> dx = solve(residual);
+            const ContactStates  states = linearise(x, start, data, residual);
+            const Vector<double> dx     = solve(residual);
             x += dx;
             const double increment =
               std::max(relative_increment(dx, x, 0, n_u, displacement_floor),
@@ -463,9 +473,8 @@ namespace PolyFrac
       }
 
     // The state at the solution, with its contact states and step data.
-    after = before;
-    after.contact =
-      linearise(x, before, p_before, bubble_loads, data, residual);
+    after         = before;
+    after.contact = linearise(x, start, data, residual);
     std::copy(x.begin(), x.begin() + n_u, after.displacement.begin());
     for (unsigned int i = 0; i < after.multipliers.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)

@@ -130,19 +130,32 @@ namespace PolyFrac
     void
     make_pattern();
 
+    /** What the iterations of a step share, computed once per step. */
+    struct StepStart
+    {
+      /** The state at the start of the step. */
+      const MechanicalState<dim> &state;
+      /** The pressures at the start of the step. */
+      const Vector<double> &pressures;
+      /** FaceBubbles::loads() at the step's time (empty without bubbles). */
+      Vector<double> bubble_loads;
+      /** The apertures of #state per fracture face. */
+      std::vector<double> apertures;
+      /** |K| div_K of #state (bubbles included) per cell. */
+      std::vector<double> volume;
+    };
+
     /**
      * The residual of @p x into @p residual and its Jacobian into
-     * #jacobian (prescribed pressures: identity rows, zero residual);
-     * @p data gets the apertures, fracture storage and volume change of
-     * @p x. Returns the contact states at @p x.
+     * #jacobian (prescribed pressures: identity rows, zero residual) for
+     * the step from @p start; @p data gets the apertures, fracture storage
+     * and volume change of @p x. Returns the contact states at @p x.
      */
     ContactStates
-    linearise(const Vector<double>       &x,
-              const MechanicalState<dim> &before,
-              const Vector<double>       &p_before,
-              const Vector<double>       &bubble_loads,
-              FlowStepData               &data,
-              Vector<double>             &residual);
+    linearise(const Vector<double> &x,
+              const StepStart      &start,
+              FlowStepData         &data,
+              Vector<double>       &residual);
 
     /** Adds the Biot couplings of the cells (D, D_s) and of the fracture
      * faces (J) to #jacobian, both ways, with their Jacobian scaling. */
@@ -159,6 +172,11 @@ namespace PolyFrac
     /** |σ| of fracture face @p i. */
     double
     fracture_face_measure(const unsigned int i) const;
+
+    /** |K| div_K of the displacement @p u and the face bubbles @p s per
+     * cell. */
+    std::vector<double>
+    volume_changes(const Vector<double> &u, const Vector<double> &s) const;
 
     /** The apertures d_0 − [[u]]_n of the displacement @p u per fracture
      * face. */
