@@ -2,6 +2,7 @@
 #include <deal.II/lac/sparse_direct.h>
 
 #include <polyfrac/app/poromechanical_newton.h>
+#include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/physics/biot_system.h>
 
 #include <algorithm>
@@ -249,7 +250,8 @@ namespace PolyFrac
       }
 
     // Mass: the step's data at the apertures of u.
-    const std::vector<double> d = apertures(u);
+    const std::vector<double> d =
+      coupling.apertures(u, prm.flow.aperture_at_contact);
     for (unsigned int i = 0; i < d.size(); ++i)
       {
         data.apertures[i]        = d[i];
@@ -288,14 +290,8 @@ namespace PolyFrac
     // Prescribed pressures: identity rows, scaled like the flow block.
     for (const auto &line : pressure_constraints.get_lines())
       {
-        const types::global_dof_index row = p0 + line.index;
-        const double                  diagonal =
-          std::max(std::abs(jacobian.diag_element(row)), 1e-300);
-        for (auto entry = jacobian.begin(row); entry != jacobian.end(row);
-             ++entry)
-          entry->value() = 0;
-        jacobian.set(row, row, diagonal);
-        residual(row) = 0;
+        make_scaled_identity_row(jacobian, p0 + line.index);
+        residual(p0 + line.index) = 0;
       }
     return states;
   }
@@ -315,18 +311,6 @@ namespace PolyFrac
           volume[c] += bubble_volume[c];
       }
     return volume;
-  }
-
-
-
-  template <int dim>
-  std::vector<double>
-  PoromechanicalNewton<dim>::apertures(const Vector<double> &u) const
-  {
-    std::vector<double> d = coupling.normal_jumps(u);
-    for (double &value : d)
-      value = prm.flow.aperture_at_contact - value;
-    return d;
   }
 
 
@@ -400,12 +384,12 @@ namespace PolyFrac
     else
       flow.make_constraints(data, p_before, pressure_constraints);
     // What the iterations share: the start of the step and the loads.
-    const StepStart start{before,
-                          p_before,
-                          bubbles ? bubbles->loads() : Vector<double>(),
-                          apertures(before.displacement),
-                          volume_changes(before.displacement,
-                                         before.face_bubbles)};
+    const StepStart start{
+      before,
+      p_before,
+      bubbles ? bubbles->loads() : Vector<double>(),
+      coupling.apertures(before.displacement, prm.flow.aperture_at_contact),
+      volume_changes(before.displacement, before.face_bubbles)};
 
     // The start: the guess, with the Dirichlet data and the prescribed
     // pressures of the step.

@@ -316,10 +316,7 @@ namespace PolyFrac
   std::vector<double>
   PoromechanicsModel<dim>::apertures(const MechanicalState<dim> &u) const
   {
-    std::vector<double> d = coupling.normal_jumps(u.displacement);
-    for (double &value : d)
-      value = prm.flow.aperture_at_contact - value;
-    return d;
+    return coupling.apertures(u.displacement, prm.flow.aperture_at_contact);
   }
 
 

@@ -25,7 +25,8 @@ namespace PolyFrac
 
   TimeStepping::TimeStepping(const Parameters &prm, const unsigned int level)
     : data(prm.time)
-    , easy_iterations(prm.nonlinear.max_coupling_iterations / 2)
+    , easy_coupling_iterations(prm.nonlinear.max_coupling_iterations / 2)
+    , easy_newton_iterations(prm.nonlinear.max_iterations / 2)
     , nominal_step(level_time_step(prm.time, level))
     , time(0, prm.time.end_time, nominal_step)
     , planned_step(nominal_step)
@@ -76,8 +77,12 @@ namespace PolyFrac
   TimeStepping::advance(const StepReport &report)
   {
     const bool easy =
-      cuts_in_a_row == 0 && (!report.coupling_iterations ||
-                             *report.coupling_iterations <= easy_iterations);
+      cuts_in_a_row == 0 &&
+      (!report.coupling_iterations ||
+       *report.coupling_iterations <= easy_coupling_iterations) &&
+      (!report.newton_iterations ||
+       *report.newton_iterations <=
+         easy_newton_iterations * report.coupling_iterations.value_or(1));
     cuts_of_last_step  = cuts_in_a_row;
     cuts_in_a_row      = 0;
     const double taken = time.get_next_step_size();

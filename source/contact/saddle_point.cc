@@ -111,26 +111,6 @@ namespace PolyFrac
 
   namespace
   {
-    /** Row @p dof of @p matrix: zero, with @p diagonal on the diagonal. */
-    void
-    make_identity_row(SparseMatrix<double>         &matrix,
-                      const types::global_dof_index dof,
-                      const double                  diagonal)
-    {
-      for (auto entry = matrix.begin(dof); entry != matrix.end(dof); ++entry)
-        entry->value() = 0;
-      matrix.set(dof, dof, diagonal);
-    }
-
-    /** The same for a distributed Trilinos matrix (a row of this rank). */
-    void
-    make_identity_row(TrilinosWrappers::SparseMatrix &matrix,
-                      const types::global_dof_index   dof,
-                      const double                    diagonal)
-    {
-      matrix.clear_row(dof, diagonal);
-    }
-
     /** Whether row @p dof of @p matrix is this rank's: always, for a
      * deal.II matrix. */
     bool
@@ -148,6 +128,28 @@ namespace PolyFrac
         static_cast<TrilinosWrappers::types::int_type>(dof));
     }
   } // namespace
+
+
+
+  void
+  make_scaled_identity_row(SparseMatrix<double>         &matrix,
+                           const types::global_dof_index dof)
+  {
+    const double diagonal =
+      std::max(std::abs(matrix.diag_element(dof)), 1e-300);
+    for (auto entry = matrix.begin(dof); entry != matrix.end(dof); ++entry)
+      entry->value() = 0;
+    matrix.set(dof, dof, diagonal);
+  }
+
+
+
+  void
+  make_scaled_identity_row(TrilinosWrappers::SparseMatrix &matrix,
+                           const types::global_dof_index   dof)
+  {
+    matrix.clear_row(dof, std::max(std::abs(matrix.diag_element(dof)), 1e-300));
+  }
 
 
 
@@ -195,10 +197,7 @@ namespace PolyFrac
     // Dirichlet dofs: an identity row scaled like the diagonal.
     for (const auto &[dof, value] : dirichlet)
       if (is_own_row(jacobian, dof))
-        make_identity_row(jacobian,
-                          dof,
-                          std::max(std::abs(jacobian.diag_element(dof)),
-                                   1e-300));
+        make_scaled_identity_row(jacobian, dof);
   }
 
 

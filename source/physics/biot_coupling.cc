@@ -118,6 +118,18 @@ namespace PolyFrac
 
 
 
+  template <int dim>
+  std::vector<double>
+  BiotCoupling<dim>::apertures(const Vector<double> &u, const double d_0) const
+  {
+    std::vector<double> d = normal_jumps(u);
+    for (double &value : d)
+      value = d_0 - value;
+    return d;
+  }
+
+
+
   template class BiotCoupling<2>;
   template class BiotCoupling<3>;
 } // namespace PolyFrac

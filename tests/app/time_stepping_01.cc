@@ -6,7 +6,8 @@
 // - Adaptive: after easy steps (coupling iterations at most half of their
 //   maximum) the step grows by 1.5 up to Maximum time step; a hard step
 //   keeps it; a cut one halves it and it grows again only after an easy
-//   step;
+//   step; a Newton step (one coupling iteration, PoromechanicalNewton) is
+//   easy when its Newton iterations are at most half of their maximum;
 // - Maximum steps: the step that would exceed it throws, naming the entry.
 // Each property is checked here (AssertThrow); the output lists the steps.
 
@@ -139,6 +140,40 @@ namespace
 
 
   void
+  newton_steps_judged_by_newton_iterations()
+  {
+    Parameters prm                        = Testing::default_parameters(2, 2);
+    prm.time.end_time                     = 100;
+    prm.time.time_step                    = 1;
+    prm.time.adaptive                     = true;
+    prm.nonlinear.max_coupling_iterations = 20;
+    prm.nonlinear.max_iterations          = 20;
+    TimeStepping        steps(prm, 0);
+    std::vector<double> lengths;
+    for (const unsigned int newton : {10, 11, 3})
+      {
+        StepReport report        = converged(1);
+        report.newton_iterations = newton;
+        lengths.push_back(steps.next_time() - steps.current_time());
+        steps.advance(report);
+      }
+    lengths.push_back(steps.next_time() - steps.current_time());
+    std::cout << "Newton step lengths (10, 11, 3 iterations):";
+    for (const double length : lengths)
+      std::cout << ' ' << length;
+    std::cout << std::endl;
+    const std::vector<double> expected = {1, 1.5, 1.5, 2.25};
+    for (unsigned int i = 0; i < expected.size(); ++i)
+      check(same(lengths[i], expected[i]),
+            "Newton step " + std::to_string(i + 1) + " is " +
+              std::to_string(lengths[i]) + ", expected " +
+              std::to_string(expected[i]) +
+              " (easy: at most 10 Newton iterations)");
+  }
+
+
+
+  void
   maximum_steps()
   {
     Parameters prm                        = Testing::default_parameters(2, 2);
@@ -173,5 +208,6 @@ main()
   fixed_steps_land_on_output_times();
   cut_then_nominal_step();
   adaptive_steps();
+  newton_steps_judged_by_newton_iterations();
   maximum_steps();
 }

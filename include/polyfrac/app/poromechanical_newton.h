@@ -178,11 +178,6 @@ namespace PolyFrac
     std::vector<double>
     volume_changes(const Vector<double> &u, const Vector<double> &s) const;
 
-    /** The apertures d_0 − [[u]]_n of the displacement @p u per fracture
-     * face. */
-    std::vector<double>
-    apertures(const Vector<double> &u) const;
-
     /** Solves #jacobian dx = −@p residual (scaled, UMFPACK). */
     Vector<double>
     solve(const Vector<double> &residual);

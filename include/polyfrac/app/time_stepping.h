@@ -22,8 +22,10 @@ namespace PolyFrac
    *   10 times in a row;
    * - with Adaptive = true, the step grows by the factor 1.5 after an easy
    *   step (converged at the first attempt, in at most half of Maximum
-   *   coupling iterations when the model reports them), up to Maximum time
-   *   step, and a cut step grows again only after an easy one;
+   *   coupling iterations and at most half of Maximum iterations of
+   *   Newton per coupling iteration, each when the model reports it: a
+   *   monolithic Newton step is one coupling iteration), up to Maximum
+   *   time step, and a cut step grows again only after an easy one;
    * - every step lands on each of the Output times (and on End time), at
    *   which the state is written; without Output times every step is;
    * - at most Maximum steps steps are taken: then the run stops with a
@@ -130,7 +132,10 @@ namespace PolyFrac
 
     const Parameters::TimeData &data;
     /** The coupling iterations above which a step is not easy. */
-    const unsigned int easy_iterations;
+    const unsigned int easy_coupling_iterations;
+    /** The Newton iterations per coupling iteration above which a step is
+     * not easy. */
+    const unsigned int easy_newton_iterations;
     /** Time step of the level. */
     const double nominal_step;
     DiscreteTime time;

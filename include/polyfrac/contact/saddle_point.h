@@ -124,6 +124,21 @@ namespace PolyFrac
                           SparseMatrix<double>                 &matrix);
 
   /**
+   * Row @p dof of @p matrix becomes an identity row scaled like its
+   * diagonal: zero, with |a_dd| (at least 1e-300) on the diagonal, so that
+   * a fixed unknown keeps the scale of its neighbours for a symmetric
+   * diagonal scaling. The row must be this rank's.
+   */
+  void
+  make_scaled_identity_row(SparseMatrix<double>         &matrix,
+                           const types::global_dof_index dof);
+
+  /** The same for a distributed Trilinos matrix. */
+  void
+  make_scaled_identity_row(TrilinosWrappers::SparseMatrix &matrix,
+                           const types::global_dof_index   dof);
+
+  /**
    * The generalised Jacobian of the contact saddle-point system: @p
    * jacobian holds A in its displacement block on entry (and zeros
    * elsewhere); this adds, for this rank's fracture faces (all of them on

@@ -59,6 +59,12 @@ namespace PolyFrac
     std::vector<double>
     normal_jumps(const Vector<double> &u) const;
 
+    /** The apertures d = d_0 − [[u]]_σ·n^+ per fracture face, for the
+     * displacement @p u and the aperture at contact @p d_0
+     * (Flow/Aperture at contact). */
+    std::vector<double>
+    apertures(const Vector<double> &u, const double d_0) const;
+
     /** D: (D u)_K = |K| div_K u, one row per cell. */
     const SparseMatrix<double> &
     divergence_matrix() const
