@@ -96,15 +96,27 @@ namespace
 
 
 
-  void
-  adaptive_steps()
+  /** Adaptive steps of 1 to End time 100, at most 20 coupling and 20
+   * Newton iterations. */
+  Parameters
+  adaptive_parameters()
   {
     Parameters prm                        = Testing::default_parameters(2, 2);
     prm.time.end_time                     = 100;
     prm.time.time_step                    = 1;
     prm.time.adaptive                     = true;
-    prm.time.maximum_time_step            = 4;
     prm.nonlinear.max_coupling_iterations = 20;
+    prm.nonlinear.max_iterations          = 20;
+    return prm;
+  }
+
+
+
+  void
+  adaptive_steps()
+  {
+    Parameters prm             = adaptive_parameters();
+    prm.time.maximum_time_step = 4;
     TimeStepping        steps(prm, 0);
     std::ostringstream  log;
     std::vector<double> lengths;
@@ -142,12 +154,7 @@ namespace
   void
   newton_steps_judged_by_newton_iterations()
   {
-    Parameters prm                        = Testing::default_parameters(2, 2);
-    prm.time.end_time                     = 100;
-    prm.time.time_step                    = 1;
-    prm.time.adaptive                     = true;
-    prm.nonlinear.max_coupling_iterations = 20;
-    prm.nonlinear.max_iterations          = 20;
+    const Parameters    prm = adaptive_parameters();
     TimeStepping        steps(prm, 0);
     std::vector<double> lengths;
     for (const unsigned int newton : {10, 11, 3})
