@@ -1,7 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
 
 #include <polyfrac/app/poromechanical_newton.h>
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/physics/biot_system.h>
 
@@ -287,12 +287,26 @@ namespace PolyFrac
     const ContactStates states =
       contact.linearise(x, start.state, residual, jacobian);
 
-    // Prescribed pressures: identity rows, scaled like the flow block.
+    // Prescribed pressures: identity rows, scaled like the flow block, and
+    // no coupling to them in other rows either (their increments vanish):
+    // where the flow block has no diagonal (an impermeable cell without
+    // storage, its pressure held) the identity is 1e-300 and its column,
+    // scaled by 1e150, would ruin the pivots.
+    if (pressure_constraints.n_constraints() == 0)
+      return states;
+    std::vector<bool> prescribed(n_dofs(), false);
     for (const auto &line : pressure_constraints.get_lines())
       {
         make_scaled_identity_row(jacobian, p0 + line.index);
-        residual(p0 + line.index) = 0;
+        residual(p0 + line.index)   = 0;
+        prescribed[p0 + line.index] = true;
       }
+    for (types::global_dof_index row = 0; row < n_dofs(); ++row)
+      if (!prescribed[row])
+        for (auto entry = jacobian.begin(row); entry != jacobian.end(row);
+             ++entry)
+          if (prescribed[entry->column()])
+            entry->value() = 0;
     return states;
   }
 
@@ -316,13 +330,13 @@ namespace PolyFrac
 
 
   template <int dim>
-  Vector<double>
-  PoromechanicalNewton<dim>::solve(const Vector<double> &residual)
+  void
+  PoromechanicalNewton<dim>::factorise()
   {
     // The symmetric diagonal scaling of BiotSystem (unit diagonals where
     // there is one; a row without, the multipliers of faces in contact,
     // is scaled by its largest entry).
-    Vector<double> scaling(n_dofs());
+    scaling.reinit(n_dofs());
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       {
         double size = std::abs(jacobian.diag_element(i));
@@ -335,21 +349,44 @@ namespace PolyFrac
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
         entry->value() *= scaling(i) * scaling(entry->column());
-    Vector<double> rhs(residual), dx(n_dofs());
-    rhs *= -1.;
-    rhs.scale(scaling);
-    SparseDirectUMFPACK direct;
+    // MUMPS (nested-dissection ordering): on B6's 17k tetrahedra, 79k
+    // unknowns, 13 s per factorisation against UMFPACK's 80 s.
+    const IndexSet rows = complete_index_set(n_dofs());
+    // The solver refers to the matrix it factorised: it goes first.
+    direct.reset();
+    factorised_jacobian.clear();
+    factorised_jacobian.reinit(
+      rows, rows, jacobian, MPI_COMM_SELF, 0., true, &sparsity);
+    direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+      direct_control,
+      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
     try
       {
-        direct.initialize(jacobian);
+        direct->initialize(factorised_jacobian);
       }
     catch (const std::exception &)
       {
+        direct.reset();
         AssertThrow(false,
                     ExcMessage(BiotSystem<dim>::singular_message(
                       "displacement, multipliers, face bubbles, pressures")));
       }
-    direct.vmult(dx, rhs);
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  PoromechanicalNewton<dim>::solve(const Vector<double> &residual) const
+  {
+    Vector<double> rhs(residual);
+    rhs *= -1.;
+    rhs.scale(scaling);
+    Vector<double> dx =
+      solve_on_owned_rows(complete_index_set(n_dofs()),
+                          MPI_COMM_SELF,
+                          rhs,
+                          [&](auto &x, const auto &b) { direct->solve(x, b); });
     dx.scale(scaling);
     return dx;
   }
@@ -402,14 +439,31 @@ namespace PolyFrac
 
     // The states of the guess: a state at rest keeps them and converges in
     // one iteration.
-    ContactStates  previous_states = guess.contact;
-    Vector<double> residual;
+    ContactStates previous_states = guess.contact, factorised_states;
+    // The largest ratio of two increments in a row that lets a chord step
+    // follow.
+    constexpr double contraction = 0.5;
+    Vector<double>   residual;
     try
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_iterations; ++k)
           {
-            const ContactStates  states = linearise(x, start, data, residual);
-            const Vector<double> dx     = solve(residual);
+            const ContactStates states = linearise(x, start, data, residual);
+            // A step with the states of the last factorisation reuses it
+            // (a chord step) while the iteration contracts: the Jacobian
+            // then changes only through the apertures and slip directions.
+            const bool reuse =
+              k > 2 && states.normal == factorised_states.normal &&
+              states.tangential == factorised_states.tangential &&
+              result.increments[k - 2] <=
+                contraction * result.increments[k - 3];
+            if (!reuse)
+              {
+                factorise();
+                factorised_states = states;
+                ++result.factorisations;
+              }
+            const Vector<double> dx = solve(residual);
             x += dx;
             const double increment =
               std::max(relative_increment(dx, x, 0, n_u, displacement_floor),

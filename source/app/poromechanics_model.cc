@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string>
 
 namespace PolyFrac
 {
@@ -50,6 +51,13 @@ namespace PolyFrac
       b.reinit(x.size() - n_a);
       std::copy(x.begin(), x.begin() + n_a, a.begin());
       std::copy(x.begin() + n_a, x.end(), b.begin());
+    }
+
+    /** "@p n @p noun", with the plural "s" unless @p n is 1. */
+    std::string
+    count(const unsigned int n, const std::string &noun)
+    {
+      return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
     }
   } // namespace
 
@@ -609,7 +617,8 @@ namespace PolyFrac
     report.newton_iterations   = result.iterations;
     report.coupling_increments = result.increments;
     summarise_fractures(report);
-    out << "Step 0, equilibrium at t = 0: monolithic";
+    out << "Step 0, equilibrium at t = 0: monolithic ("
+        << count(result.factorisations, "factorisation") << ")";
     print_contact_summary(report, out);
     return report;
   }
@@ -775,8 +784,7 @@ namespace PolyFrac
     state    = u_new;
     pressure = p_new;
     out << "Step to t = " << t_new << ": monolithic, "
-        << system->n_factorisations() << " factorisation"
-        << (system->n_factorisations() > 1 ? "s" : "") << " so far"
+        << count(system->n_factorisations(), "factorisation") << " so far"
         << std::endl;
     return report;
   }
@@ -814,7 +822,8 @@ namespace PolyFrac
     state    = u_new;
     pressure = p_new;
     summarise_fractures(report);
-    out << "Step to t = " << t_new << ": monolithic";
+    out << "Step to t = " << t_new << ": monolithic ("
+        << count(result.factorisations, "factorisation") << ")";
     print_contact_summary(report, out);
     return report;
   }

@@ -1,8 +1,11 @@
 #ifndef polyfrac_app_poromechanical_newton_h
 #define polyfrac_app_poromechanical_newton_h
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/app/level_discretization.h>
@@ -15,6 +18,7 @@
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,9 +47,10 @@ namespace PolyFrac
    * contact states (ContactMechanics::linearise()), the Biot couplings D,
    * D_s, J, and the aperture in the cubic law and the fracture storage
    * (Flow::aperture_derivative()), so that the iteration converges
-   * quadratically once the contact states settle; it is solved by UMFPACK
-   * with the symmetric diagonal scaling of BiotSystem. The iteration stops
-   * when the contact states did not change (or, for faces at the Coulomb
+   * quadratically once the contact states settle; it is solved by MUMPS
+   * (Trilinos' Amesos) after the symmetric diagonal scaling of
+   * BiotSystem. The iteration stops when the contact states did not
+   * change (or, for faces at the Coulomb
    * bound that flip between stick and slip, in the second iteration in a
    * row within the tolerance) and the relative increments of
    * (u, s) and of (p, λ) are at most Nonlinear solver/Coupling tolerance,
@@ -75,6 +80,9 @@ namespace PolyFrac
       bool converged = false;
       /** Newton iterations (each one linear solve). */
       unsigned int iterations = 0;
+      /** Factorisations of the Jacobian among them (the others reused the
+       * last one: see step()). */
+      unsigned int factorisations = 0;
       /** The relative increment of each iteration. */
       std::vector<double> increments;
       /** Why it failed (empty if it converged). */
@@ -178,9 +186,13 @@ namespace PolyFrac
     std::vector<double>
     volume_changes(const Vector<double> &u, const Vector<double> &s) const;
 
-    /** Solves #jacobian dx = −@p residual (scaled, UMFPACK). */
+    /** Factorises #jacobian (scaled, MUMPS) for solve(). */
+    void
+    factorise();
+
+    /** Solves J dx = −@p residual with the J of the last factorise(). */
     Vector<double>
-    solve(const Vector<double> &residual);
+    solve(const Vector<double> &residual) const;
 
     /** The unknowns (u, λ, s, p) of a state. */
     Vector<double>
@@ -203,6 +215,13 @@ namespace PolyFrac
     SparseMatrix<double> flow_matrix;
     /** The prescribed pressures of the step (offset to x). */
     AffineConstraints<double> pressure_constraints;
+    /** The symmetric diagonal scaling of the last factorise(). */
+    Vector<double> scaling;
+    /** The scaled Jacobian of the last factorise(), and its MUMPS
+     * factorisation. */
+    TrilinosWrappers::SparseMatrix                  factorised_jacobian;
+    SolverControl                                   direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
   };
 } // namespace PolyFrac
 
