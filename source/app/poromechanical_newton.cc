@@ -1,4 +1,5 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
 
 #include <polyfrac/app/poromechanical_newton.h>
 #include <polyfrac/base/mpi.h>
@@ -350,11 +351,15 @@ namespace PolyFrac
       for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
         entry->value() *= scaling(i) * scaling(entry->column());
     // MUMPS (nested-dissection ordering): on B6's 17k tetrahedra, 79k
-    // unknowns, 13 s per factorisation against UMFPACK's 80 s.
-    const IndexSet rows = complete_index_set(n_dofs());
+    // unknowns, 13 s per factorisation against UMFPACK's 80 s. MUMPS may
+    // fail where UMFPACK does not: its workspace, estimated before the
+    // pivots, can be too small once delayed pivots fill in more (INFO(1) =
+    // −9, met on B6); UMFPACK then factorises this Jacobian.
     // The solver refers to the matrix it factorised: it goes first.
     direct.reset();
+    fallback.reset();
     factorised_jacobian.clear();
+    const IndexSet rows = complete_index_set(n_dofs());
     factorised_jacobian.reinit(
       rows, rows, jacobian, MPI_COMM_SELF, 0., true, &sparsity);
     direct = std::make_unique<TrilinosWrappers::SolverDirect>(
@@ -363,10 +368,20 @@ namespace PolyFrac
     try
       {
         direct->initialize(factorised_jacobian);
+        return;
       }
     catch (const std::exception &)
       {
         direct.reset();
+      }
+    fallback = std::make_unique<SparseDirectUMFPACK>();
+    try
+      {
+        fallback->initialize(jacobian);
+      }
+    catch (const std::exception &)
+      {
+        fallback.reset();
         AssertThrow(false,
                     ExcMessage(BiotSystem<dim>::singular_message(
                       "displacement, multipliers, face bubbles, pressures")));
@@ -382,11 +397,16 @@ namespace PolyFrac
     Vector<double> rhs(residual);
     rhs *= -1.;
     rhs.scale(scaling);
-    Vector<double> dx =
-      solve_on_owned_rows(complete_index_set(n_dofs()),
-                          MPI_COMM_SELF,
-                          rhs,
-                          [&](auto &x, const auto &b) { direct->solve(x, b); });
+    Vector<double> dx(n_dofs());
+    if (direct)
+      dx = solve_on_owned_rows(complete_index_set(n_dofs()),
+                               MPI_COMM_SELF,
+                               rhs,
+                               [&](auto &x, const auto &b) {
+                                 direct->solve(x, b);
+                               });
+    else
+      fallback->vmult(dx, rhs);
     dx.scale(scaling);
     return dx;
   }

@@ -363,11 +363,24 @@ namespace PolyFrac
 
 
 
+    /** The gmsh node tags of @p element, separated by commas. */
+    std::string
+    node_list(const Element &element)
+    {
+      std::string list;
+      for (const std::size_t node : element.nodes)
+        list += (list.empty() ? "" : ", ") + std::to_string(node);
+      return list;
+    }
+
+
+
     /**
      * Sets the boundary id of each boundary face of @p tria to the tag of
-     * the first physical group of @p groups (dimension dim-1, fracture tags
-     * left out) that has it as element, and to 0 if none has. An element
-     * of such a group that is not a boundary face is an error: it is most
+     * the physical group of @p groups (dimension dim-1, fracture tags left
+     * out) that has it as element, and to 0 if none has. An element in two
+     * such groups is an error (a face has one boundary id), and so is an
+     * element of such a group that is not a boundary face: it is most
      * likely a fracture missing from Fractures/Gmsh physical tags.
      */
     template <int dim>
@@ -397,7 +410,17 @@ namespace PolyFrac
                                      ": an element of physical group " +
                                      std::to_string(tag) +
                                      " is not a face of the mesh."));
-              boundary_id_of.emplace(key, tag);
+              const auto [it, inserted] = boundary_id_of.emplace(key, tag);
+              AssertThrow(inserted || it->second == tag,
+                          ExcMessage(in_file + ": the element with nodes " +
+                                     node_list(element) +
+                                     " is in the physical groups " +
+                                     std::to_string(it->second) + " and " +
+                                     std::to_string(tag) +
+                                     " of dimension " +
+                                     std::to_string(group_dim) +
+                                     ", but a boundary face has one boundary "
+                                     "id: keep it in one of them."));
             }
         }
 

@@ -339,6 +339,26 @@ CASES = {
                        "Physical Curve(1) = {1, 2, 3, 4};\n"
                        "Physical Surface(100) = {1};\n"},
         stage="level"),
+    "gmsh_face_in_two_groups": case(
+        "a gmsh boundary curve in two physical groups (1: all sides, 2: "
+        "the top), which used to take the first group's id silently",
+        ["The gmsh mesh <", "box.geo>: the element with nodes",
+         "is in the physical groups 1 and 2 of dimension 1, but a boundary "
+         "face has one boundary id: keep it in one of them."],
+        files={"scene.prm": section(
+            "Mesh", Source="gmsh", File_name="box.geo") + section(
+            "Boundary conditions", Dirichlet_boundary_ids="1",
+            Neumann_boundary_ids="2", Neumann_traction="0; -1"),
+            "box.geo": "Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
+                       "Point(3) = {2, 2, 0, 1};\nPoint(4) = {0, 2, 0, 1};\n"
+                       "Line(1) = {1, 2};\nLine(2) = {2, 3};\n"
+                       "Line(3) = {3, 4};\nLine(4) = {4, 1};\n"
+                       "Curve Loop(1) = {1, 2, 3, 4};\n"
+                       "Plane Surface(1) = {1};\n"
+                       "Physical Curve(1) = {1, 2, 3, 4};\n"
+                       "Physical Curve(2) = {3};\n"
+                       "Physical Surface(100) = {1};\n"},
+        stage="level"),
     "degenerate_gmsh_cell": case(
         "a gmsh mesh with a flat triangle (its vertices on one line)",
         ["Cell 0 (vertex average 0.5 0, diameter 1) has measure 0: it is "

@@ -2,6 +2,7 @@
 #define polyfrac_app_poromechanical_newton_h
 
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -186,7 +187,8 @@ namespace PolyFrac
     std::vector<double>
     volume_changes(const Vector<double> &u, const Vector<double> &s) const;
 
-    /** Factorises #jacobian (scaled, MUMPS) for solve(). */
+    /** Factorises #jacobian (scaled; MUMPS, or UMFPACK where MUMPS
+     * fails) for solve(). */
     void
     factorise();
 
@@ -222,6 +224,9 @@ namespace PolyFrac
     TrilinosWrappers::SparseMatrix                  factorised_jacobian;
     SolverControl                                   direct_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    /** UMFPACK's factorisation of the last factorise() where MUMPS failed
+     * (else null). */
+    std::unique_ptr<SparseDirectUMFPACK> fallback;
   };
 } // namespace PolyFrac
 
