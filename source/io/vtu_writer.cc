@@ -353,22 +353,37 @@ namespace PolyFrac
     const auto path = [&](const std::string &file_name) {
       return std::filesystem::path(directory) / file_name;
     };
+    // The ranks that write a piece: those with patches (rank 0 if none).
+    std::vector<unsigned int> writers = {0};
+    if (n_ranks > 1)
+      {
+        const std::vector<unsigned int> has_patches =
+          Utilities::MPI::all_gather(communicator,
+                                     data.patches.empty() ? 0u : 1u);
+        writers.clear();
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          if (has_patches[r])
+            writers.push_back(r);
+        if (writers.empty())
+          writers = {0};
+      }
     flags.time = time;
-    write_checked(path(piece_name(rank)), [&](std::ostream &out) {
-      DataOutBase::write_vtu(data.patches, data.names, data.ranges, flags, out);
-    });
+    if (std::find(writers.begin(), writers.end(), rank) != writers.end())
+      write_checked(path(piece_name(rank)), [&](std::ostream &out) {
+        DataOutBase::write_vtu(
+          data.patches, data.names, data.ranges, flags, out);
+      });
     const std::string file_name = n_ranks == 1 ? piece_name(0) : step + ".pvtu";
     times_and_names.emplace_back(time, file_name);
+    std::vector<std::string> piece_names;
+    for (const unsigned int r : writers)
+      piece_names.push_back(piece_name(r));
     if (n_ranks > 1)
-      for (unsigned int r = 0; r < n_ranks; ++r)
-        pieces.push_back(piece_name(r));
+      pieces.insert(pieces.end(), piece_names.begin(), piece_names.end());
     if (rank != 0)
       return;
     if (n_ranks > 1)
       {
-        std::vector<std::string> piece_names;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          piece_names.push_back(piece_name(r));
         std::ostringstream record;
         DataOutBase::write_pvtu_record(
           record, piece_names, data.names, data.ranges, flags);

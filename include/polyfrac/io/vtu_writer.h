@@ -127,9 +127,12 @@ namespace PolyFrac
 
     /**
      * Writes @p data as the next step, at @p time, and rewrites the `.pvd`
-     * record. On more than one rank, each rank writes its @p data as piece
-     * `name-NNNN.RRRR.vtu` (RRRR: the rank), rank 0 the `name-NNNN.pvtu`
-     * record of the pieces, which the `.pvd` record lists; every rank must
+     * record. On more than one rank, each rank with patches writes its
+     * @p data as piece `name-NNNN.RRRR.vtu` (RRRR: the rank), rank 0 the
+     * `name-NNNN.pvtu` record of the pieces, which the `.pvd` record
+     * lists; a rank without patches (no cell, or no fracture face, of its
+     * own) writes no piece, since VTK readers refuse one without points
+     * (rank 0 writes an empty one if no rank has patches). Every rank must
      * call it.
      */
     template <int dim, int spacedim>
