@@ -57,13 +57,21 @@ namespace PolyFrac
     , n_s(bubbles ? bubbles->n_bubbles() : 0)
     , n_p(pressure_dofs.n_dofs())
   {
-    AssertThrow(!dofs.is_distributed(),
-                ExcMessage("In <" + prm.file_name +
-                           ">: the monolithic Newton step of poromechanics "
-                           "with fractures is not yet available on several "
-                           "ranks: set Nonlinear solver/Coupling scheme = "
-                           "fixed-stress, or run on one rank."));
+    AssertThrow(bubbles == nullptr || !dofs.is_distributed(),
+                ExcInternalError()); // BiotSystem refuses them
     make_pattern();
+    // The rows of the factorised Jacobian that this rank owns: an equal
+    // share of each, in order (MUMPS distributes them its own way).
+    const unsigned int n_ranks = n_mpi_ranks(communicator());
+    const unsigned int rank    = this_mpi_rank(communicator());
+    owned_rows.set_size(n_dofs());
+    owned_rows.add_range(n_dofs() * rank / n_ranks,
+                         n_dofs() * (rank + 1) / n_ranks);
+    // The cell pressures whose couplings this rank adds (its cells').
+    own_cell_pressure.assign(n_p, false);
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      own_cell_pressure[pressure_dofs.cell_dof(c)] =
+        pressure_dofs.is_locally_owned_cell(c);
   }
 
 
@@ -112,6 +120,10 @@ namespace PolyFrac
                          });
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       pattern.add(i, i);
+    // Each rank added the couplings of its cells and fracture faces; the
+    // parts of the Jacobian are summed on the whole pattern.
+    if (dofs.is_distributed())
+      unite_over_ranks(pattern, communicator());
     sparsity.copy_from(pattern);
     jacobian.reinit(sparsity);
     flow_sparsity.copy_from(flow_pattern);
@@ -155,6 +167,8 @@ namespace PolyFrac
                              [&](const auto   row,
                                  const auto   p_K,
                                  const double value) {
+                               if (!own_cell_pressure[p_K - p0])
+                                 return;
                                jacobian.add(row, p_K, -b * value);
                                jacobian.add(p_K, row, -b * value);
                              });
@@ -163,6 +177,8 @@ namespace PolyFrac
     const auto &J = coupling.normal_jump_matrix();
     for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
       {
+        if (!pressure_dofs.is_locally_owned_fracture_face(i))
+          continue;
         const types::global_dof_index p_f =
           p0 + pressure_dofs.fracture_face_dof(i);
         for (auto entry = J.begin(i); entry != J.end(i); ++entry)
@@ -188,6 +204,8 @@ namespace PolyFrac
     std::vector<types::global_dof_index> local;
     for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
       {
+        if (!pressure_dofs.is_locally_owned_fracture_face(i))
+          continue;
         const std::vector<double> derivative =
           flow.aperture_derivative(i, data, p_before, p, local);
         const double scale = data.time_step / fracture_face_measure(i);
@@ -198,6 +216,31 @@ namespace PolyFrac
                            entry->column(),
                            scale * derivative[a] * entry->value());
       }
+  }
+
+
+
+  template <int dim>
+  MPI_Comm
+  PoromechanicalNewton<dim>::communicator() const
+  {
+    return dofs.is_distributed() ? dofs.get_communicator() : MPI_COMM_SELF;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::sum_over_ranks(SparseMatrix<double> &matrix) const
+  {
+    std::vector<double> values;
+    values.reserve(matrix.n_nonzero_elements());
+    for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
+      values.push_back(entry->value());
+    Utilities::MPI::sum(values, communicator(), values);
+    auto value = values.begin();
+    for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
+      entry->value() = *value++;
   }
 
 
@@ -263,8 +306,12 @@ namespace PolyFrac
     Vector<double> h(n_p);
     flow.assemble(
       data, start.pressures, AffineConstraints<double>(), flow_matrix, h);
+    // H p of this rank's cells and fracture faces, summed over the ranks
+    // (h is whole already).
     Vector<double> Hp(n_p);
     flow_matrix.vmult(Hp, p);
+    if (dofs.is_distributed())
+      Utilities::MPI::sum(Hp, communicator(), Hp);
     Hp -= h;
     const std::vector<double> volume = volume_changes(u, s);
     for (types::global_dof_index k = 0; k < n_p; ++k)
@@ -287,6 +334,8 @@ namespace PolyFrac
     contact.set_loads(data.time, load);
     const ContactStates states =
       contact.linearise(x, start.state, residual, jacobian);
+    if (dofs.is_distributed())
+      sum_over_ranks(jacobian);
 
     // Prescribed pressures: identity rows, scaled like the flow block, and
     // no coupling to them in other rows either (their increments vanish):
@@ -359,9 +408,8 @@ namespace PolyFrac
     direct.reset();
     fallback.reset();
     factorised_jacobian.clear();
-    const IndexSet rows = complete_index_set(n_dofs());
     factorised_jacobian.reinit(
-      rows, rows, jacobian, MPI_COMM_SELF, 0., true, &sparsity);
+      owned_rows, owned_rows, jacobian, communicator(), 0., true, &sparsity);
     direct = std::make_unique<TrilinosWrappers::SolverDirect>(
       direct_control,
       TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
@@ -399,8 +447,8 @@ namespace PolyFrac
     rhs.scale(scaling);
     Vector<double> dx(n_dofs());
     if (direct)
-      dx = solve_on_owned_rows(complete_index_set(n_dofs()),
-                               MPI_COMM_SELF,
+      dx = solve_on_owned_rows(owned_rows,
+                               communicator(),
                                rhs,
                                [&](auto &x, const auto &b) {
                                  direct->solve(x, b);

@@ -158,13 +158,13 @@ namespace PolyFrac
   bool
   PoromechanicsModel<dim>::use_monolithic_scheme() const
   {
-    using Scheme        = Parameters::NonlinearData::CouplingScheme;
-    const Scheme scheme = prm.nonlinear.coupling_scheme;
+    using Scheme           = Parameters::NonlinearData::CouplingScheme;
+    const Scheme scheme    = prm.nonlinear.coupling_scheme;
+    const bool   fractured = discretization.network->n_fracture_faces() > 0;
     std::string  obstacle;
-    if (discretization.dofs->is_distributed())
-      obstacle = "on several ranks";
-    else if (!prm.flow.face_bubbles &&
-             discretization.network->n_fracture_faces() == 0)
+    if (discretization.dofs->is_distributed() && !fractured)
+      obstacle = "on several ranks without fractures";
+    else if (!prm.flow.face_bubbles && !fractured)
       obstacle = "without fractures and without Flow/Face bubbles";
     AssertThrow(scheme != Scheme::monolithic || obstacle.empty(),
                 ExcMessage("In <" + prm.file_name +
@@ -176,7 +176,6 @@ namespace PolyFrac
     // (MUMPS: 13 s per factorisation on B6's 17k tetrahedra, 79k
     // unknowns), so Linear solver/Method = AMG keeps the fixed-stress split
     // (doc/scheme.md §10).
-    const bool fractured = discretization.network->n_fracture_faces() > 0;
     return scheme == Scheme::monolithic ||
            (scheme == Scheme::automatic && obstacle.empty() &&
             (!fractured || prm.solver.method == "direct"));

@@ -27,4 +27,20 @@ namespace PolyFrac
       }
     pattern.compress();
   }
+
+
+
+  void
+  unite_over_ranks(DynamicSparsityPattern &pattern, const MPI_Comm communicator)
+  {
+    std::vector<types::global_dof_index> entries;
+    for (auto entry = pattern.begin(); entry != pattern.end(); ++entry)
+      {
+        entries.push_back(entry->row());
+        entries.push_back(entry->column());
+      }
+    for (const auto &other : Utilities::MPI::all_gather(communicator, entries))
+      for (std::size_t k = 0; k + 1 < other.size(); k += 2)
+        pattern.add(other[k], other[k + 1]);
+  }
 } // namespace PolyFrac

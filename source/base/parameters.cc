@@ -871,9 +871,11 @@ namespace PolyFrac
       "displacement-pressure pair stable, and the pressures (factorised once "
       "per time step length); with fractures a semi-smooth Newton method in "
       "these, the multipliers and the contact states, the aperture in the "
-      "cubic law linearised (UMFPACK). One rank. fixed-stress iterates flow "
-      "and mechanics. automatic: monolithic where it applies, with fractures "
-      "only with Linear solver/Method = direct; else fixed-stress.");
+      "cubic law linearised (MUMPS; on several ranks too, without face "
+      "bubbles). Without fractures one rank only. fixed-stress iterates "
+      "flow and mechanics. automatic: monolithic where it applies, with "
+      "fractures only with Linear solver/Method = direct; else "
+      "fixed-stress.");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(0),

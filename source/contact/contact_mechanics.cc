@@ -754,7 +754,6 @@ namespace PolyFrac
                                    Vector<double>             &residual_vector,
                                    SparseMatrix<double>       &jacobian)
   {
-    Assert(!dofs.is_distributed(), ExcNotImplemented());
     set_solution(reference);
     previous_step = solution;
     Vector<double> own(solution.size());
@@ -762,10 +761,11 @@ namespace PolyFrac
     const Residual R = residual(own, 1.);
     std::copy(R.vector.begin(), R.vector.end(), residual_vector.begin());
 
-    // A, then the faces' rows and columns (and the Dirichlet rows).
-    if (condensation)
-      for (types::global_dof_index row = 0; row < dofs.n_displacement_dofs();
-           ++row)
+    // A (this rank's rows), then the faces' rows and columns (and the
+    // Dirichlet rows).
+    if (condensation || dofs.is_distributed())
+      for (const types::global_dof_index row :
+           trilinos_stiffness.locally_owned_range_indices())
         {
           const StiffnessRow entries = stiffness_row(trilinos_stiffness, row);
           for (int e = 0; e < entries.length; ++e)

@@ -57,7 +57,12 @@ namespace PolyFrac
    * (u, s) and of (p, λ) are at most Nonlinear solver/Coupling tolerance,
    * each relative to the larger of the unknowns and the floors the caller
    * gives (the scale of the loads, so that a state at rest is converged at
-   * once). One rank only.
+   * once). On several ranks (without face bubbles, which are not
+   * distributed) every rank adds its part of the Jacobian (its cells,
+   * fracture faces and rows of A) to the whole matrix, the parts are summed
+   * over the ranks, and MUMPS factorises the sum with an equal share of the
+   * rows on each rank; residuals and iterates are whole on every rank, so
+   * that all ranks take the same decisions.
    */
   template <int dim>
   class PoromechanicalNewton
@@ -178,6 +183,14 @@ namespace PolyFrac
                              const Vector<double> &p_before,
                              const Vector<double> &p);
 
+    /** The ranks of the unknowns (MPI_COMM_SELF on one rank). */
+    MPI_Comm
+    communicator() const;
+
+    /** Sums the ranks' parts of @p matrix (its values, on one pattern). */
+    void
+    sum_over_ranks(SparseMatrix<double> &matrix) const;
+
     /** |σ| of fracture face @p i. */
     double
     fracture_face_measure(const unsigned int i) const;
@@ -217,6 +230,11 @@ namespace PolyFrac
     SparseMatrix<double> flow_matrix;
     /** The prescribed pressures of the step (offset to x). */
     AffineConstraints<double> pressure_constraints;
+    /** The rows of the factorised Jacobian this rank owns. */
+    IndexSet owned_rows;
+    /** Whether this rank adds the couplings of a cell pressure (its
+     * cell's), by pressure dof. */
+    std::vector<bool> own_cell_pressure;
     /** The symmetric diagonal scaling of the last factorise(). */
     Vector<double> scaling;
     /** The scaled Jacobian of the last factorise(), and its MUMPS

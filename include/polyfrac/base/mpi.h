@@ -56,6 +56,16 @@ namespace PolyFrac
                            TrilinosWrappers::SparsityPattern &pattern);
 
   /**
+   * Adds to @p pattern, on every rank of @p communicator, the entries that
+   * the other ranks have in theirs: the union of the ranks' patterns,
+   * whole on each (for a matrix to which each rank adds its part and whose
+   * parts are then summed value by value).
+   */
+  void
+  unite_over_ranks(DynamicSparsityPattern &pattern,
+                   const MPI_Comm          communicator);
+
+  /**
    * A solve on the rows @p owned of this rank: the whole @p rhs restricted
    * to them is `b`, `solve(x, b)` fills `x` (both distributed Trilinos
    * vectors on @p owned), and x is returned whole on every rank.

@@ -173,7 +173,11 @@ namespace PolyFrac
      * @p residual, and adds their generalised Jacobian, A included, to
      * @p jacobian; the Dirichlet rows become identity rows (whatever
      * else the caller added to them). Returns the contact states at @p x.
-     * One rank only.
+     * On several ranks the residual is whole on every rank, while
+     * @p jacobian gets this rank's part: its rows of A and its fracture
+     * faces (the Dirichlet rows: zero but their diagonal, A's on the rank
+     * that owns the row and 1e-300 elsewhere), so that the sum of the
+     * ranks' parts is the Jacobian.
      */
     ContactStates
     linearise(const Vector<double>       &x,
