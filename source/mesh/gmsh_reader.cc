@@ -416,8 +416,7 @@ namespace PolyFrac
                                      node_list(element) +
                                      " is in the physical groups " +
                                      std::to_string(it->second) + " and " +
-                                     std::to_string(tag) +
-                                     " of dimension " +
+                                     std::to_string(tag) + " of dimension " +
                                      std::to_string(group_dim) +
                                      ", but a boundary face has one boundary "
                                      "id: keep it in one of them."));

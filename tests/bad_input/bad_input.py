@@ -41,6 +41,15 @@ BASE_3D = BASE_2D.replace("set Dimension = 2", "set Dimension = 3").replace(
     "set Subdivisions = 4, 4", "set Subdivisions = 4, 4, 4")
 
 SEGMENT = "subsection Fractures\n  set Segments = 0, -0.5 : 0, 0.5\nend\n"
+# A gmsh box [0, 2]^2: its sides are physical group 1, its surface 100.
+BOX_GEO = ("Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
+           "Point(3) = {2, 2, 0, 1};\nPoint(4) = {0, 2, 0, 1};\n"
+           "Line(1) = {1, 2};\nLine(2) = {2, 3};\n"
+           "Line(3) = {3, 4};\nLine(4) = {4, 1};\n"
+           "Curve Loop(1) = {1, 2, 3, 4};\n"
+           "Plane Surface(1) = {1};\n"
+           "Physical Curve(1) = {1, 2, 3, 4};\n"
+           "Physical Surface(100) = {1};\n")
 CONTACT = "subsection Model\n  set Model = contact mechanics\nend\n"
 FLOW = "subsection Model\n  set Model = flow\nend\n"
 
@@ -330,14 +339,7 @@ CASES = {
             "Boundary conditions", Dirichlet_boundary_ids="1") + section(
             "Exact solution", Analytic_solution="terzaghi",
             Analytic_load="1"),
-            "box.geo": "Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
-                       "Point(3) = {2, 2, 0, 1};\nPoint(4) = {0, 2, 0, 1};\n"
-                       "Line(1) = {1, 2};\nLine(2) = {2, 3};\n"
-                       "Line(3) = {3, 4};\nLine(4) = {4, 1};\n"
-                       "Curve Loop(1) = {1, 2, 3, 4};\n"
-                       "Plane Surface(1) = {1};\n"
-                       "Physical Curve(1) = {1, 2, 3, 4};\n"
-                       "Physical Surface(100) = {1};\n"},
+            "box.geo": BOX_GEO},
         stage="level"),
     "gmsh_face_in_two_groups": case(
         "a gmsh boundary curve in two physical groups (1: all sides, 2: "
@@ -349,15 +351,7 @@ CASES = {
             "Mesh", Source="gmsh", File_name="box.geo") + section(
             "Boundary conditions", Dirichlet_boundary_ids="1",
             Neumann_boundary_ids="2", Neumann_traction="0; -1"),
-            "box.geo": "Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
-                       "Point(3) = {2, 2, 0, 1};\nPoint(4) = {0, 2, 0, 1};\n"
-                       "Line(1) = {1, 2};\nLine(2) = {2, 3};\n"
-                       "Line(3) = {3, 4};\nLine(4) = {4, 1};\n"
-                       "Curve Loop(1) = {1, 2, 3, 4};\n"
-                       "Plane Surface(1) = {1};\n"
-                       "Physical Curve(1) = {1, 2, 3, 4};\n"
-                       "Physical Curve(2) = {3};\n"
-                       "Physical Surface(100) = {1};\n"},
+            "box.geo": BOX_GEO + "Physical Curve(2) = {3};\n"},
         stage="level"),
     "degenerate_gmsh_cell": case(
         "a gmsh mesh with a flat triangle (its vertices on one line)",
