@@ -1,27 +1,31 @@
 #!/usr/bin/env bash
 # The slip scene (prm/poromechanics-2d-slip.prm, tight rock k = 1e-17 m²,
 # its loads, injection and Δt = 1 s unchanged) on the shipped mesh and its
-# uniform refinements (levels 0..L-1, 16² to 16·2^(L-1) squared cells cut
-# into triangles; Refine time step with mesh stays false): per level the
-# mean aperture, the mean fracture pressure (the injection pressure: the
-# source is uniform along the fault) and the slipping and open faces at the
-# end (t = 10 s), the slipped length (slipping faces times the face length
-# √2/(16·2^k) of the 45° fault), the wall time, and each level's difference
-# to the finest level and to the next. Prints a markdown table.
+# uniform refinements (levels 0..L-1: the 16² squares cut into triangles,
+# refined k more times, then the cells next to the fault Mesh/Fracture
+# refinements more times; Refine time step with mesh stays false): per level
+# the mean aperture, the mean fracture pressure (the injection pressure: the
+# source is uniform along the fault), the open and slipping faces and the
+# slipped length (slip_area) at the end (t = 10 s), the wall time, and each
+# level's difference to the finest level and to the next. Prints a markdown
+# table. Further arguments go to polyfrac, e.g.
+# --set "Mesh/Fracture refinements=0" for uniform meshes.
 #
-# usage: benchmarks/slip_levels.sh [LEVELS=4] [path/to/polyfrac]
+# usage: benchmarks/slip_levels.sh [LEVELS=4] [path/to/polyfrac] [--set ...]
+# (output in $SLIP_LEVELS_OUTPUT, default output/slip-levels)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 levels=${1:-4}
 program=${2:-$root/build/polyfrac}
-out=$root/output/slip-levels
+shift $(($# < 2 ? $# : 2))
+out=${SLIP_LEVELS_OUTPUT:-$root/output/slip-levels}
 mkdir -p "$out"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 /usr/bin/time -f "wall %e s, peak memory %M KB" "$program" \
   "$root/prm/poromechanics-2d-slip.prm" \
   --set "Convergence study/Number of refinement levels=$levels" \
   --set "Output/Write VTU=false" \
-  --set "Output/Output directory=$out" > "$out/log" 2> "$out/time" ||
+  --set "Output/Output directory=$out" "$@" > "$out/log" 2> "$out/time" ||
   { tail -20 "$out/log"; cat "$out/time"; exit 1; }
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 tail -1 "$out/time"
@@ -32,11 +36,13 @@ rows = []
 for k in range(levels):
     series = list(csv.DictReader(open(f"{out}/time_series-level-{k}.csv")))
     last = series[-1]
-    face = math.sqrt(2) / (16 * 2 ** k)
+    # The fault (length √2) is cut into equal faces on every level.
+    faces = sum(int(last[n]) for n in ("n_open", "n_stick", "n_slip"))
     rows.append(dict(level=k, aperture=float(last["mean_aperture"]),
                      pressure=float(last["mean_fracture_pressure"]),
                      slip=int(last["n_slip"]), open=int(last["n_open"]),
-                     slipped=int(last["n_slip"]) * face, face=face,
+                     slipped=float(last["slip_area"]),
+                     face=math.sqrt(2) / faces,
                      wall=sum(float(r["wall_seconds"]) for r in series)))
 fine = rows[-1]
 print("| level | mean aperture (m) | vs finest | mean p_f (MPa) | vs finest |"

@@ -95,11 +95,15 @@ namespace PolyFrac
     else
       MeshBuilder::make_box(prm, level, triangulation);
     MeshBuilder::refine_in_box(prm, triangulation);
+    MeshBuilder::refine_near_fractures(prm,
+                                       fractures_from<dim>(prm),
+                                       triangulation);
     build_on_triangulation(prm,
                            communicator,
                            !gmsh_as_read ?
                              GmshMesh<dim>() :
-                           prm.mesh.local_refinements == 0 ?
+                           prm.mesh.local_refinements == 0 &&
+                               prm.mesh.fracture_refinements == 0 ?
                              *gmsh_as_read :
                              fracture_elements_after_refinement(*gmsh_as_read,
                                                                 triangulation));

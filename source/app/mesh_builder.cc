@@ -10,6 +10,7 @@
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/fractures/segment_distance.h>
 
+#include <algorithm>
 #include <array>
 #include <random>
 
@@ -207,6 +208,38 @@ namespace PolyFrac
 
     template <int dim>
     void
+    refine_near_fractures(const Parameters                 &prm,
+                          const std::vector<Fracture<dim>> &fractures,
+                          Triangulation<dim>               &tria)
+    {
+      for (unsigned int r = 0; r < prm.mesh.fracture_refinements; ++r)
+        {
+          std::vector<bool> on_fracture(tria.n_vertices(), false);
+          for (const auto &face : tria.active_face_iterators())
+            if (face->manifold_id() != numbers::flat_manifold_id)
+              for (const unsigned int v : face->vertex_indices())
+                on_fracture[face->vertex_index(v)] = true;
+          for (const auto &cell : tria.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const Point<dim> &x   = cell->vertex(v);
+                const double      tol = 1e-10 * cell->diameter();
+                if (on_fracture[cell->vertex_index(v)] ||
+                    std::any_of(fractures.begin(),
+                                fractures.end(),
+                                [&](const Fracture<dim> &fracture) {
+                                  return fracture.distance(x) < tol;
+                                }))
+                  cell->set_refine_flag();
+              }
+          tria.execute_coarsening_and_refinement();
+        }
+    }
+
+
+
+    template <int dim>
+    void
     distort(const Parameters                 &prm,
             const std::vector<Fracture<dim>> &fractures,
             const std::vector<bool>          &fixed_vertices,
@@ -310,6 +343,14 @@ namespace PolyFrac
     refine_in_box(const Parameters &, Triangulation<2> &);
     template void
     refine_in_box(const Parameters &, Triangulation<3> &);
+    template void
+    refine_near_fractures(const Parameters &,
+                          const std::vector<Fracture<2>> &,
+                          Triangulation<2> &);
+    template void
+    refine_near_fractures(const Parameters &,
+                          const std::vector<Fracture<3>> &,
+                          Triangulation<3> &);
     template void
     distort(const Parameters &,
             const std::vector<Fracture<2>> &,

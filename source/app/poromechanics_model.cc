@@ -709,20 +709,22 @@ namespace PolyFrac
     if (network.n_fracture_faces() == 0)
       return;
     report.n_open = report.n_stick = report.n_slip = 0;
-    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      {
-        *report.n_open += state.contact.normal[i] == NormalState::open;
-        *report.n_stick +=
-          state.contact.tangential[i] == TangentialState::stick;
-        *report.n_slip += state.contact.tangential[i] == TangentialState::slip;
-      }
-    const std::vector<double> d    = apertures(state);
-    const std::vector<double> p_f  = flow.fracture_pressures(pressure);
+    report.open_area = report.slip_area = 0;
+    const std::vector<double> d         = apertures(state);
+    const std::vector<double> p_f       = flow.fracture_pressures(pressure);
     double                    area = 0, aperture = 0, mean_p = 0;
-    for (unsigned int i = 0; i < d.size(); ++i)
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
         const double measure =
           geometry.faces[network.fracture_faces[i].face].measure;
+        const bool open = state.contact.normal[i] == NormalState::open;
+        const bool slip = state.contact.tangential[i] == TangentialState::slip;
+        *report.n_open += open;
+        *report.n_stick +=
+          state.contact.tangential[i] == TangentialState::stick;
+        *report.n_slip += slip;
+        *report.open_area += open * measure;
+        *report.slip_area += slip * measure;
         area += measure;
         aperture += measure * d[i];
         mean_p += measure * p_f[i];

@@ -220,7 +220,7 @@ namespace PolyFrac
         append_to_time_series(
           "step,time,time_step,cuts,coupling_iterations,"
           "newton_iterations,n_open,n_stick,n_slip,mean_aperture,"
-          "mean_fracture_pressure,err_pressure,err_fracture_pressure,err_u,"
+          "mean_fracture_pressure,open_area,slip_area,err_pressure,err_fracture_pressure,err_u,"
           "energy_residual,wall_seconds\n");
       }
   }
@@ -318,6 +318,8 @@ namespace PolyFrac
     write_cell(out, report.n_slip);
     write_cell(out, report.mean_aperture);
     write_cell(out, report.mean_fracture_pressure);
+    write_cell(out, report.open_area);
+    write_cell(out, report.slip_area);
     write_cell(out, error("err_pressure"));
     write_cell(out, error("err_fracture_pressure"));
     write_cell(out, error("err_u"));

@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/tensor.h>
 
 #include <polyfrac/base/memory_estimate.h>
 
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace PolyFrac
@@ -68,8 +70,30 @@ namespace PolyFrac
                  std::min(prm.mesh.box_upper[d], prm.mesh.upper_right[d]) -
                    std::max(prm.mesh.box_lower[d], prm.mesh.lower_left[d])) /
         (prm.mesh.upper_right[d] - prm.mesh.lower_left[d]);
-    return n_cells *
-           (1 + in_box * (std::pow(2., dim * prm.mesh.local_refinements) - 1));
+    n_cells *=
+      1 + in_box * (std::pow(2., dim * prm.mesh.local_refinements) - 1);
+    // Each fracture refinement divides at least the cells on both sides of
+    // the fracture faces (of size h / 2^r in round r) into 2^dim children:
+    // a lower bound.
+    double h = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dim; ++d)
+      h = std::min(h,
+                   (prm.mesh.upper_right[d] - prm.mesh.lower_left[d]) /
+                     prm.mesh.subdivisions[d] / std::pow(2., refinements));
+    double measure = 0;
+    for (const std::vector<Point<3>> &points : prm.fractures.geometries)
+      {
+        Tensor<1, 3> twice_area;
+        for (unsigned int i = 0; i + 1 < points.size(); ++i)
+          twice_area +=
+            cross_product_3d(points[i] - points[0], points[i + 1] - points[0]);
+        measure +=
+          dim == 2 ? points[0].distance(points[1]) : 0.5 * twice_area.norm();
+      }
+    for (unsigned int r = 0; r < prm.mesh.fracture_refinements; ++r)
+      n_cells += 2 * measure / std::pow(h / std::pow(2., r), dim - 1.) *
+                 (std::pow(2., dim) - 1);
+    return n_cells;
   }
 
 

@@ -446,6 +446,15 @@ namespace PolyFrac
                       "Extra refinements of the cells in the local refinement "
                       "box. Hanging nodes become polytope vertices.");
     prm.declare_entry(
+      "Fracture refinements",
+      "0",
+      Patterns::Integer(0, 8),
+      "Extra refinements of the cells that touch a fracture (a face or a "
+      "vertex on it), after the local refinement box: each one halves "
+      "the cells next to the fractures once more, so that the mesh is "
+      "graded towards them, the layer where the fluid leaks off into a "
+      "tight matrix. Hanging nodes become polytope vertices.");
+    prm.declare_entry(
       "Refinement",
       "uniform",
       Patterns::Selection("uniform|adaptive"),
@@ -1186,12 +1195,13 @@ namespace PolyFrac
                            "Model = elasticity and contact mechanics "
                            "have so far; Model = " +
                            model + " needs <Refinement = uniform>."));
-    mesh.local_refinements  = prm->get_integer("Local refinements");
-    mesh.distortion         = prm->get_double("Distortion");
-    mesh.distortion_type    = prm->get("Distortion type");
-    mesh.random_seed        = prm->get_integer("Random seed");
-    mesh.cells_per_polytope = prm->get_integer("Cells per polytope");
-    mesh.file_name          = prm->get("File name");
+    mesh.local_refinements    = prm->get_integer("Local refinements");
+    mesh.fracture_refinements = prm->get_integer("Fracture refinements");
+    mesh.distortion           = prm->get_double("Distortion");
+    mesh.distortion_type      = prm->get("Distortion type");
+    mesh.random_seed          = prm->get_integer("Random seed");
+    mesh.cells_per_polytope   = prm->get_integer("Cells per polytope");
+    mesh.file_name            = prm->get("File name");
     prm->leave_subsection();
     if (mesh.source == "gmsh")
       {
@@ -1226,7 +1236,18 @@ namespace PolyFrac
     fractures.gmsh_physical_tags = read_ids<int>(prm->get("Gmsh physical tags"),
                                                  "Gmsh physical tags",
                                                  fwhere);
-    fractures.pressure           = prm->get("Pressure");
+    AssertThrow(mesh.fracture_refinements == 0 ||
+                  !fractures.geometries.empty() ||
+                  !fractures.gmsh_physical_tags.empty(),
+                ExcMessage("In <" + file_name +
+                           ">, subsection <Mesh>: <Fracture refinements> = " +
+                           std::to_string(mesh.fracture_refinements) +
+                           " refines the cells that touch a fracture, but "
+                           "the scene has none (Fractures/" +
+                           (dim == 2 ? "Segments" : "Polygons") +
+                           " and Gmsh physical tags are empty): set it "
+                           "to 0 or give the fractures."));
+    fractures.pressure = prm->get("Pressure");
     AssertThrow((model != "flow" && model != "poromechanics") ||
                   fractures.pressure == "0",
                 ExcMessage(fwhere + ": <Pressure> = " + fractures.pressure +

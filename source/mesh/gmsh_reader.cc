@@ -411,7 +411,8 @@ namespace PolyFrac
                                      std::to_string(tag) +
                                      " is not a face of the mesh."));
               const auto [it, inserted] = boundary_id_of.emplace(key, tag);
-              AssertThrow(inserted || it->second == tag,
+              AssertThrow(inserted ||
+                            it->second == static_cast<types::boundary_id>(tag),
                           ExcMessage(in_file + ": the element with nodes " +
                                      node_list(element) +
                                      " is in the physical groups " +

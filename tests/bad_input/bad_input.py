@@ -585,6 +585,18 @@ CASES = {
          "is ignored"],
         files={"scene.prm": section("Mesh", Refined_fraction="0.5")},
         status=0),
+    "fracture_refinements_without_fractures": case(
+        "`Mesh/Fracture refinements = 2` in a scene without fractures",
+        ["subsection <Mesh>: <Fracture refinements> = 2 refines the cells "
+         "that touch a fracture, but the scene has none", "set it to 0 or "
+         "give the fractures"],
+        files={"scene.prm": section("Mesh", Fracture_refinements="2")}),
+    "fracture_refinements": case(
+        "`Mesh/Fracture refinements = 2` next to a segment: a correct run "
+        "(the cells that touch it are refined twice)",
+        [], files={"scene.prm": SEGMENT + section("Mesh",
+                                                  Fracture_refinements="2")},
+        status=0, written=["results/convergence.csv"]),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
         ["<Lame mu> must be > 0, not 0.000000"],

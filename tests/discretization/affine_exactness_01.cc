@@ -1,11 +1,12 @@
 // Checks that ∇^K, Π^K and the jump reconstruction are exact on piecewise
 // affine fields (affine in each region cut by two fractures crossing the
-// whole domain) on every mesh kind, that Σ_s g_s = 0, that the polytope
-// measures add up to |Ω|, and that on simplices the nodal block of S_K
-// vanishes. Each property is asserted (Testing::expect_round_off). The
-// weights ω of every face and cell are non-negative, also on agglomerates
-// far from convex (32 cells per polytope, whose weights of doc/scheme.md §4
-// reach -0.017 before MeshGeometry makes them non-negative).
+// whole domain) on every mesh kind (also graded towards the fractures), that
+// Σ_s g_s = 0, that the polytope measures add up to |Ω|, and that on simplices
+// the nodal block of S_K vanishes. Each property is asserted
+// (Testing::expect_round_off). The weights ω of every face and cell are
+// non-negative, also on agglomerates far from convex (32 cells per polytope,
+// whose weights of doc/scheme.md §4 reach -0.017 before MeshGeometry makes them
+// non-negative).
 
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/discretization/local_reconstruction.h>
@@ -187,6 +188,10 @@ check_all()
   check<dim>("local refinement, distorted", [](Parameters &p) {
     p.mesh.local_refinements = 2;
     p.mesh.distortion        = 0.25;
+  });
+  check<dim>("refined towards the fractures", [](Parameters &p) {
+    p.mesh.cell_type            = "simplex";
+    p.mesh.fracture_refinements = dim == 2 ? 2 : 1;
   });
   check<dim>("agglomerated", [](Parameters &p) {
     p.mesh.subdivisions.assign(dim, 8);

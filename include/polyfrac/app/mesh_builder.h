@@ -17,7 +17,8 @@ namespace PolyFrac
    * The mesh pipeline of one refinement level (doc/scheme.md §3-4, issue
    * "Foundation"): a deal.II triangulation (generated box or gmsh), refined
    * `Global refinements + level` times, then `Local refinements` times in
-   * the local refinement box; its polytopal view; vertex distortion; METIS
+   * the local refinement box, then `Fracture refinements` times next to
+   * the fractures; its polytopal view; vertex distortion; METIS
    * agglomeration.
    *
    * Distortion and agglomeration never change the fracture geometry:
@@ -40,6 +41,19 @@ namespace PolyFrac
     template <int dim>
     void
     refine_in_box(const Parameters &prm, Triangulation<dim> &tria);
+
+    /**
+     * Refines `Fracture refinements` times the cells that touch a fracture
+     * (one of their vertices lies on it): the planar @p fractures of a
+     * generated box, or the faces that the gmsh reader marked with a
+     * manifold id (its fracture elements). Each round halves the cells next
+     * to the fractures once more, so that the mesh is graded towards them.
+     */
+    template <int dim>
+    void
+    refine_near_fractures(const Parameters                 &prm,
+                          const std::vector<Fracture<dim>> &fractures,
+                          Triangulation<dim>               &tria);
 
     /**
      * Moves the vertices of @p mesh (Distortion, Distortion type, Random

@@ -45,6 +45,10 @@ namespace PolyFrac
     std::optional<double> mean_aperture;
     /** Mean fracture pressure p_f (area-weighted). */
     std::optional<double> mean_fracture_pressure;
+    /** Measure (area; length in 2D) of the open fracture faces. */
+    std::optional<double> open_area;
+    /** Measure (area; length in 2D) of the fracture faces in slip. */
+    std::optional<double> slip_area;
     /** The residual of the discrete energy balance of the step. */
     std::optional<double> energy_residual;
     /** The relative increment of each coupling iteration of the step

@@ -131,6 +131,9 @@ namespace PolyFrac
       Point<3> box_upper;
       /** Local refinements: how often the cells in the box are refined. */
       unsigned int local_refinements;
+      /** Fracture refinements: how often the cells touching a fracture are
+       * refined (a mesh graded towards the fractures). */
+      unsigned int fracture_refinements;
       /** Distortion: vertex displacement relative to the local mesh size. */
       double distortion;
       /** Distortion type: random | smooth. */
