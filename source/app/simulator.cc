@@ -409,10 +409,9 @@ namespace PolyFrac
     write_convergence_table(out, rows, true, false, rate_reference(prm));
     if (prm.output.print_timings)
       timer.print_summary();
-    out << "\nFiles written in " << prm.output.directory << ':';
-    for (const std::string &name : written_files)
-      out << ' ' << name;
-    out << std::endl;
+    out << "\nFiles written in " << prm.output.directory << ':' << std::endl;
+    for (const std::string &line : grouped_file_list(written_files))
+      out << "  " << line << std::endl;
     report_checks(out);
   }
 

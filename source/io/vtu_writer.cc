@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numeric>
+#include <regex>
 #include <sstream>
 
 namespace PolyFrac
@@ -410,6 +412,64 @@ namespace PolyFrac
     if (!names.empty())
       names.push_back(name + ".pvd");
     return names;
+  }
+
+
+
+  std::vector<std::string>
+  grouped_file_list(const std::vector<std::string> &file_names)
+  {
+    // name-NNNN.vtu, name-NNNN.pvtu (a step), name-NNNN.RRRR.vtu (a piece).
+    const std::regex series_file("(.+)-[0-9]{4}(\\.[0-9]{4})?\\.p?vtu");
+    struct Series
+    {
+      std::vector<std::string> steps, pieces;
+    };
+    std::map<std::string, Series> series;
+    // The lines in order, a series by its name at its first file.
+    std::vector<std::pair<bool, std::string>> order;
+    const auto add_series = [&](const std::string &name) {
+      if (series.count(name) == 0)
+        order.emplace_back(true, name);
+      return &series[name];
+    };
+    for (const std::string &file_name : file_names)
+      {
+        std::smatch match;
+        if (std::regex_match(file_name, match, series_file))
+          (match[2].matched ? add_series(match[1])->pieces :
+                              add_series(match[1])->steps)
+            .push_back(file_name);
+        else if (file_name.size() > 4 &&
+                 file_name.compare(file_name.size() - 4, 4, ".pvd") == 0)
+          add_series(file_name.substr(0, file_name.size() - 4));
+        else
+          order.emplace_back(false, file_name);
+      }
+    const auto range = [](const std::vector<std::string> &names) {
+      return names.front() +
+             (names.size() > 1 ? " to " + names.back() : std::string());
+    };
+    std::vector<std::string> lines;
+    for (const auto &[is_series, name] : order)
+      {
+        if (!is_series)
+          {
+            lines.push_back(name);
+            continue;
+          }
+        const Series &s    = series[name];
+        std::string   line = name + ".pvd";
+        if (!s.steps.empty())
+          line += " with " + std::to_string(s.steps.size()) +
+                  (s.steps.size() == 1 ? " step: " : " steps: ") +
+                  range(s.steps);
+        if (!s.pieces.empty())
+          line += ", their " + std::to_string(s.pieces.size()) + " piece" +
+                  (s.pieces.size() == 1 ? " " : "s ") + range(s.pieces);
+        lines.push_back(line);
+      }
+    return lines;
   }
 
 

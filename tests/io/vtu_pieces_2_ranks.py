@@ -4,7 +4,7 @@
 cells cut by a fracture (one rank owns no fracture face). Every piece a
 .pvtu record lists exists and is read by a VTK reader (meshio) with points
 and cells, no other piece is written, the pieces hold each cell once, and
-the line naming the files written lists exactly the files in the output
+the list of files written names exactly the files in the output
 directory. (A rank without cells used to write a piece without <Points>
 that meshio refuses.)
 
@@ -18,6 +18,9 @@ import sys
 import xml.etree.ElementTree as ElementTree
 
 import meshio
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from files_written import files_written  # noqa: E402
 
 program, work = sys.argv[1], sys.argv[2]
 shutil.rmtree(work, ignore_errors=True)
@@ -48,13 +51,7 @@ def run_scene(name, scene_text, cells):
     check(run.returncode == 0, name + ": the run failed:\n" + run.stdout +
           run.stderr)
     out = os.path.join(directory, "out")
-    listed = [line for line in run.stdout.splitlines()
-              if line.startswith("Files written in out: ")]
-    check(len(listed) == 1, "one line naming the files written")
-    names = listed[0][len("Files written in out: "):].split()
-    check(sorted(names) == sorted(os.listdir(out)),
-          "the files written are those listed: %s against %s"
-          % (sorted(os.listdir(out)), sorted(names)))
+    files_written(run.stdout, "out", out)
     records = sorted(glob.glob(os.path.join(out, "*.pvtu")))
     check([os.path.basename(r) for r in records] == sorted(cells),
           "%s: the records %s" % (name, records))

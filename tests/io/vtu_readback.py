@@ -4,8 +4,8 @@
 Runs the program on the contact patch scenes patch_slip_2d.prm (agglomerated
 distorted quadrilaterals) and patch_slip_3d.prm (distorted hexahedra), whose
 solution is piecewise affine and reproduced to round-off, and checks:
-- the line naming the files written lists exactly the files in the output
-  directory, and each .pvd indexes existing .vtu files at t = 0;
+- the list of files written (files_written.py) names exactly the files in
+  the output directory, and each .pvd indexes existing .vtu files at t = 0;
 - the field names and the array sizes (points, cells) of both files, and
   their geometry: every cell has a positive measure and the cells tile the
   domain (matrix) or the fracture;
@@ -25,6 +25,9 @@ import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from files_written import files_written  # noqa: E402
 
 try:
     import meshio
@@ -91,18 +94,6 @@ def run(program, prm, directory, *settings):
           f"{' '.join(command)} exited with {result.returncode}:\n"
           + result.stderr)
     return result.stdout
-
-
-def files_written(stdout, directory):
-    """The files named by the program's last line; checks they are all."""
-    prefix = "Files written in " + directory + ":"
-    lines = [line for line in stdout.splitlines() if line.startswith(prefix)]
-    check(len(lines) == 1, "no line '" + prefix + " ...' in the output")
-    names = lines[0][len(prefix):].split()
-    check(sorted(names) == sorted(os.listdir(directory)),
-          f"files named {sorted(names)}, in the directory "
-          f"{sorted(os.listdir(directory))}")
-    return names
 
 
 def series(directory, name):
@@ -242,7 +233,7 @@ def read_back(program, source_dir, work_dir, name):
     directory = os.path.join(work_dir, name)
     shutil.rmtree(directory, ignore_errors=True)
     stdout = run(program, prm, directory)
-    names = files_written(stdout, directory)
+    names = files_written(stdout, directory, directory)
     for base in ["solution-level-0", "fractures-level-0"]:
         check(base + ".pvd" in names and base + "-0000.vtu" in names,
               f"{base}: .pvd or .vtu not written")

@@ -162,6 +162,17 @@ namespace PolyFrac
     /** The pieces of the `.pvtu` records written so far. */
     std::vector<std::string> pieces;
   };
+
+  /**
+   * The list of @p file_names to print, one line per file, except that the
+   * files of a VtuSeries (`name-NNNN.vtu` or `.pvtu`, the pieces
+   * `name-NNNN.RRRR.vtu` and `name.pvd`) make one line, where the first of
+   * them stood: `name.pvd with 11 steps: name-0000.vtu to name-0010.vtu`,
+   * followed on several ranks by `, their 22 pieces name-0000.0000.vtu to
+   * name-0010.0001.vtu`. So a run of hundreds of steps lists a few lines.
+   */
+  std::vector<std::string>
+  grouped_file_list(const std::vector<std::string> &file_names);
 } // namespace PolyFrac
 
 #endif
