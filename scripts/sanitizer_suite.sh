@@ -32,6 +32,13 @@ long_tests=(
   # poromechanics_2d_slip (69 s) keeps in the Debug suite.
   polyfrac/poromechanics_impermeable # 108 s (Release 1.7 s)
   examples/step-3 # 122 s (Release 5 s; the slip scene twice)
+  # Added 2026-11-27: the default scene (Release 2.4 s: the injection into
+  # the network, 26 damped Newton iterations in its first step) and its
+  # comparison with the fixed-stress split (Release 5 s); the Newton, its
+  # line search and the equilibrium start stay in the Debug suite through
+  # poromechanics_2d_slip.
+  polyfrac/default_scene
+  polyfrac/equal_runs_default_scene_newton
   # Release 2.5 s: the slip scene's step 0 and step 1 four times; the
   # equilibrium start stays in Debug through poromechanics_2d_slip.
   app/equilibrium_start_01

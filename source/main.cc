@@ -102,8 +102,10 @@ namespace
          "versions and exits\n"
          "\n"
          "Where to start:\n"
-         "  polyfrac                   the default scene: a pressurised "
-         "fracture network in 2D\n"
+         "  polyfrac                   the default scene: water injected "
+         "into a 2D fracture\n"
+         "                             network under an in-situ stress "
+         "(poromechanics, 2 s)\n"
          "  polyfrac "
       << source_dir
       << "/prm/smooth-2d.prm --set \"Convergence study/Number of "

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <set>
 #include <sstream>
 
 namespace PolyFrac
@@ -439,6 +441,35 @@ namespace PolyFrac
 
 
   template <int dim>
+  ContactStates
+  PoromechanicalNewton<dim>::line_search(Vector<double>  &x,
+                                         Vector<double>  &dx,
+                                         const StepStart &start,
+                                         FlowStepData    &data,
+                                         Vector<double>  &residual)
+  {
+    const auto merit = [this](Vector<double> r) {
+      r.scale(scaling);
+      return r.norm_sqr();
+    };
+    const double         merit_at_x = merit(residual);
+    const Vector<double> from       = x;
+    for (double alpha = 1;; alpha /= 2)
+      {
+        x = from;
+        x.add(alpha, dx);
+        const ContactStates states = linearise(x, start, data, residual);
+        if (merit(residual) < merit_at_x || alpha <= 1. / 64)
+          {
+            dx *= alpha;
+            return states;
+          }
+      }
+  }
+
+
+
+  template <int dim>
   Vector<double>
   PoromechanicalNewton<dim>::solve(const Vector<double> &residual) const
   {
@@ -508,48 +539,81 @@ namespace PolyFrac
     // The states of the guess: a state at rest keeps them and converges in
     // one iteration.
     ContactStates previous_states = guess.contact, factorised_states;
+    const auto    same = [](const ContactStates &a, const ContactStates &b) {
+      return a.normal == b.normal && a.tangential == b.tangential;
+    };
+    // The states met since the last reduction of β, and the iteration of
+    // the smallest increment since then.
+    std::set<std::pair<std::vector<NormalState>, std::vector<TangentialState>>>
+                 seen_states;
+    unsigned int best_iteration = 0;
+    double       best_increment = std::numeric_limits<double>::max();
     // The largest ratio of two increments in a row that lets a chord step
     // follow.
-    constexpr double contraction = 0.5;
-    Vector<double>   residual;
+    constexpr double           contraction = 0.5;
+    Vector<double>             residual;
+    const std::vector<double> &increments = result.increments;
+    ContactStates              states;
     try
       {
+        states = linearise(x, start, data, residual);
         for (unsigned int k = 1; k <= prm.nonlinear.max_iterations; ++k)
           {
-            const ContactStates states = linearise(x, start, data, residual);
+            // The active set cycles (states met before, not those of the
+            // last iteration) or the iteration stagnates (no smaller
+            // increment in 4 iterations): as ContactMechanics::newton(),
+            // make β smaller (the solution does not depend on it) and
+            // linearise again.
+            const bool settled = same(states, previous_states);
+            const bool cycling =
+              !seen_states.emplace(states.normal, states.tangential).second &&
+              !settled;
+            previous_states       = states;
+            const bool stagnating = k >= best_iteration + 4;
+            if ((cycling || stagnating) &&
+                contact.reduce_complementarity_parameter())
+              {
+                ++result.beta_reductions;
+                seen_states.clear();
+                best_increment    = std::numeric_limits<double>::max();
+                best_iteration    = k;
+                factorised_states = ContactStates();
+                states            = linearise(x, start, data, residual);
+                continue;
+              }
             // A step with the states of the last factorisation reuses it
             // (a chord step) while the iteration contracts: the Jacobian
             // then changes only through the apertures and slip directions.
-            const bool reuse =
-              k > 2 && states.normal == factorised_states.normal &&
-              states.tangential == factorised_states.tangential &&
-              result.increments[k - 2] <=
-                contraction * result.increments[k - 3];
+            const std::size_t n = increments.size();
+            const bool        reuse =
+              n >= 2 && same(states, factorised_states) &&
+              increments[n - 1] <= contraction * increments[n - 2];
             if (!reuse)
               {
                 factorise();
                 factorised_states = states;
                 ++result.factorisations;
               }
-            const Vector<double> dx = solve(residual);
-            x += dx;
+            Vector<double> dx = solve(residual);
+            states            = line_search(x, dx, start, data, residual);
             const double increment =
               std::max(relative_increment(dx, x, 0, n_u, displacement_floor),
                        relative_increment(dx, x, s0, p0, displacement_floor)) +
               std::max(relative_increment(dx, x, p0, n_dofs(), pressure_floor),
                        relative_increment(dx, x, n_u, s0, pressure_floor));
-            result.increments.push_back(increment);
-            result.iterations = k;
             // Converged when the step was taken with settled states, or
             // when a second step in a row moved nothing: faces at the
             // Coulomb bound (|b_τ| = g to round-off) may flip between
             // stick and slip, both of which the solution satisfies.
             const double tolerance = prm.nonlinear.coupling_tolerance;
-            const bool   settled =
-              states.normal == previous_states.normal &&
-              states.tangential == previous_states.tangential;
-            const bool again = k > 1 && result.increments[k - 2] <= tolerance;
-            previous_states  = states;
+            const bool   again     = n > 0 && increments[n - 1] <= tolerance;
+            result.increments.push_back(increment);
+            result.iterations = k;
+            if (increment < best_increment)
+              {
+                best_increment = increment;
+                best_iteration = k;
+              }
             if (increment <= tolerance && (settled || again))
               {
                 result.converged = true;
@@ -573,14 +637,19 @@ namespace PolyFrac
              << " iterations (Nonlinear solver/Maximum iterations; last "
                 "relative increment "
              << result.increments.back() << ", tolerance "
-             << prm.nonlinear.coupling_tolerance << ").";
+             << prm.nonlinear.coupling_tolerance
+             << "), after dividing the complementarity parameter by 10 "
+             << result.beta_reductions
+             << " times where the contact states cycled or the "
+                "increments stagnated.";
         result.failure = what.str();
         return result;
       }
 
-    // The state at the solution, with its contact states and step data.
+    // The state at the solution, with its contact states and step data
+    // (linearised there by the line search).
     after         = before;
-    after.contact = linearise(x, start, data, residual);
+    after.contact = states;
     std::copy(x.begin(), x.begin() + n_u, after.displacement.begin());
     for (unsigned int i = 0; i < after.multipliers.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)

@@ -625,6 +625,20 @@ namespace PolyFrac
 
   template <int dim>
   bool
+  ContactMechanics<dim>::reduce_complementarity_parameter()
+  {
+    if (n_beta_reductions == 3)
+      return false;
+    ++n_beta_reductions;
+    for (double &b : beta)
+      b /= 10;
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
   ContactMechanics<dim>::newton(const double    load,
                                 const bool      continued,
                                 Vector<double> &x,
@@ -691,11 +705,9 @@ namespace PolyFrac
             best_merit     = merit(R);
             best_iteration = it;
           }
-        if ((cycling || it >= best_iteration + 4) && n_beta_reductions < 3)
+        if ((cycling || it >= best_iteration + 4) &&
+            reduce_complementarity_parameter())
           {
-            ++n_beta_reductions;
-            for (double &b : beta)
-              b /= 10;
             seen_states.clear();
             best_merit     = std::numeric_limits<double>::max();
             best_iteration = it;

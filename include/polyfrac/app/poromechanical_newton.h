@@ -57,12 +57,17 @@ namespace PolyFrac
    * (u, s) and of (p, λ) are at most Nonlinear solver/Coupling tolerance,
    * each relative to the larger of the unknowns and the floors the caller
    * gives (the scale of the loads, so that a state at rest is converged at
-   * once). On several ranks (without face bubbles, which are not
-   * distributed) every rank adds its part of the Jacobian (its cells,
-   * fracture faces and rows of A) to the whole matrix, the parts are summed
-   * over the ranks, and MUMPS factorises the sum with an equal share of the
-   * rows on each rank; residuals and iterates are whole on every rank, so
-   * that all ranks take the same decisions.
+   * once). Where the contact states cycle (states met before come back) or
+   * the increments stagnate (none smaller in 4 iterations), the
+   * complementarity parameters are divided by 10, as in
+   * ContactMechanics::newton(), at most three times. Every step is damped
+   * where the full step would make the residual larger (line_search()). On
+   * several ranks (without face bubbles, which are not distributed) every rank
+   * adds its part of the Jacobian (its cells, fracture faces and rows of A) to
+   * the whole matrix, the parts are summed over the ranks, and MUMPS factorises
+   * the sum with an equal share of the rows on each rank; residuals and
+   * iterates are whole on every rank, so that all ranks take the same
+   * decisions.
    */
   template <int dim>
   class PoromechanicalNewton
@@ -89,6 +94,9 @@ namespace PolyFrac
       /** Factorisations of the Jacobian among them (the others reused the
        * last one: see step()). */
       unsigned int factorisations = 0;
+      /** How often the iteration divided the complementarity parameters
+       * by 10 (ContactMechanics::reduce_complementarity_parameter()). */
+      unsigned int beta_reductions = 0;
       /** The relative increment of each iteration. */
       std::vector<double> increments;
       /** Why it failed (empty if it converged). */
@@ -170,6 +178,23 @@ namespace PolyFrac
               const StepStart      &start,
               FlowStepData         &data,
               Vector<double>       &residual);
+
+    /**
+     * The Newton step from @p x along @p dx, damped: x + α dx with the
+     * largest α of 1, 1/2, ..., 1/64 whose merit ‖S r‖² (S: the scaling of
+     * the last factorise()) is smaller than that of @p x, whose residual is
+     * @p residual (α = 1/64 if none is). A full step that makes the
+     * residual larger, as when the opening of the faces and the fracture
+     * pressure overshoot each other, is so shortened. On return @p x,
+     * @p dx (α dx), @p residual, #jacobian and @p data are those of the new
+     * iterate, linearised there; returns its contact states.
+     */
+    ContactStates
+    line_search(Vector<double>  &x,
+                Vector<double>  &dx,
+                const StepStart &start,
+                FlowStepData    &data,
+                Vector<double>  &residual);
 
     /** Adds the Biot couplings of the cells (D, D_s) and of the fracture
      * faces (J) to #jacobian, both ways, with their Jacobian scaling. */

@@ -133,6 +133,17 @@ namespace PolyFrac
     set_loads(const double t, const Vector<double> &additional_load);
 
     /**
+     * Divides every complementarity parameter β_σ by 10, which weakens the
+     * coupling of the contact states to the jump where a Newton method
+     * cycles between active sets (the contact conditions hold for every
+     * β > 0, so the solution does not change), at most three times over
+     * the life of this object (later solves inherit it). Returns whether
+     * it did.
+     */
+    bool
+    reduce_complementarity_parameter();
+
+    /**
      * Frees what only the Newton steps need between one solve() and the
      * next (the AMG of the condensed steps and its operator); solve()
      * builds them again if called later.
