@@ -120,6 +120,18 @@ long_tests=(
   # 16 s on 2 ranks: which pieces the ranks write (Release 3 s); the VTU
   # writer on 2 ranks stays through the parallel scenes.
   io/vtu_pieces_2_ranks
+  # Debug wall times of a clean-clone .ci/run of ba76ac2 (idle machine,
+  # 1,851 s in all: 734 + 1,040 + 77), left out to bring CI under 30
+  # minutes again after the slip scene's mesh was graded (626 cells, not
+  # 512). The checkpoint and the distributed Newton stay in the Release
+  # suite (io/restart, io/restart_2_ranks, poromechanics_2d_slip_2_ranks_
+  # newton); the parser in Debug through every program test; the HFV
+  # operator in Debug through the flow scenes (flow_2d_network,
+  # flow_3d_network) and physics/flow_cubic_law_01.
+  io/restart # 52 s (Release 14 s)
+  parallel/poromechanics_2d_slip_2_ranks_newton # 26 s (Release 3 s)
+  base/bad_parameters_01 # 30 s
+  discretization/hfv_exactness_01 # 34 s
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \
