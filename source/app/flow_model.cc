@@ -40,6 +40,12 @@ namespace PolyFrac
     , edges(*discretization.geometry, *discretization.network)
     , dofs(*discretization.mesh, *discretization.network, edges)
     , flow(prm, *discretization.geometry, *discretization.network, edges, dofs)
+    , fluid_balance(prm,
+                    *discretization.geometry,
+                    *discretization.network,
+                    edges,
+                    dofs,
+                    flow)
     , pressure(flow.initial_pressure())
   {
     if (discretization.dofs->is_distributed())
@@ -61,7 +67,7 @@ namespace PolyFrac
   FlowModel<dim>::save_state(std::ostream &out) const
   {
     boost::archive::binary_oarchive archive(out);
-    archive << pressure;
+    archive << pressure << run_volumes << time;
   }
 
 
@@ -71,7 +77,7 @@ namespace PolyFrac
   FlowModel<dim>::load_state(std::istream &in)
   {
     boost::archive::binary_iarchive archive(in);
-    archive >> pressure;
+    archive >> pressure >> run_volumes >> time;
   }
 
 
@@ -115,6 +121,8 @@ namespace PolyFrac
         report.failure   = what.str();
         return report;
       }
+    run_volumes += fluid_balance.step(data, previous, pressure, {}, {}, {});
+    time                 = t_new;
     const auto &network  = *discretization.network;
     const auto &geometry = *discretization.geometry;
     if (network.n_fracture_faces() > 0)
@@ -134,6 +142,16 @@ namespace PolyFrac
         report.mean_fracture_pressure = p_f / area;
       }
     return report;
+  }
+
+
+
+  template <int dim>
+  void
+  FlowModel<dim>::print_run_summary(std::ostream &out) const
+  {
+    print_fluid_summary(
+      out, run_volumes, time, dim, flow.injection_pressure(time, pressure));
   }
 
 

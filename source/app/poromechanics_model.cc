@@ -92,6 +92,12 @@ namespace PolyFrac
                      flow,
                      coupling,
                      elasticity)
+    , fluid_balance(prm,
+                    *discretization.geometry,
+                    *discretization.network,
+                    edges,
+                    pressure_dofs,
+                    flow)
     , fixed_stress_coefficient(std::pow(prm.flow.biot_coefficient, 2) /
                                (prm.lame_lambda + 2 * prm.lame_mu / dim))
     , pressure(flow.initial_pressure())
@@ -630,7 +636,8 @@ namespace PolyFrac
   PoromechanicsModel<dim>::save_state(std::ostream &out) const
   {
     boost::archive::binary_oarchive archive(out);
-    archive << state << pressure << initial_cell_pressure << initial_volume;
+    archive << state << pressure << initial_cell_pressure << initial_volume
+            << run_volumes << time;
     if (contact)
       archive << *contact;
   }
@@ -642,7 +649,8 @@ namespace PolyFrac
   PoromechanicsModel<dim>::load_state(std::istream &in)
   {
     boost::archive::binary_iarchive archive(in);
-    archive >> state >> pressure >> initial_cell_pressure >> initial_volume;
+    archive >> state >> pressure >> initial_cell_pressure >> initial_volume >>
+      run_volumes >> time;
     if (contact)
       archive >> *contact;
   }
@@ -689,8 +697,9 @@ namespace PolyFrac
       return report;
 
     report.energy_residual = energy_residual(data, u_k, p_k, scale.energy);
-    state                  = u_k;
-    pressure               = p_k;
+    add_fluid_volumes(data, u_k, p_k);
+    state    = u_k;
+    pressure = p_k;
     summarise_fractures(report);
     out << "Step to t = " << t_new << ": " << *report.coupling_iterations
         << " coupling iterations";
@@ -731,6 +740,57 @@ namespace PolyFrac
       }
     report.mean_aperture          = aperture / area;
     report.mean_fracture_pressure = mean_p / area;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicsModel<dim>::add_fluid_volumes(const FlowStepData         &data,
+                                             const MechanicalState<dim> &u_new,
+                                             const Vector<double>       &p_new)
+  {
+    run_volumes += fluid_balance.step(data,
+                                      pressure,
+                                      p_new,
+                                      volume_changes(state),
+                                      volume_changes(u_new),
+                                      apertures(state));
+    time = data.time;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicsModel<dim>::print_run_summary(std::ostream &out) const
+  {
+    const auto &geometry = *discretization.geometry;
+    const auto &network  = *discretization.network;
+    print_fluid_summary(
+      out, run_volumes, time, dim, flow.injection_pressure(time, pressure));
+    if (network.n_fracture_faces() == 0)
+      return;
+    StepReport fractures;
+    summarise_fractures(fractures);
+    double largest_opening = 0, largest_slip = 0;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const Tensor<1, dim> jump =
+          state.jump_value(geometry, *discretization.dofs, network, i);
+        const Tensor<1, dim> &n       = network.fracture_faces[i].normal;
+        const double          opening = -jump * n;
+        largest_opening               = std::max(largest_opening, opening);
+        largest_slip = std::max(largest_slip, (jump + opening * n).norm());
+      }
+    const auto precision = out.precision(6);
+    out << "Fractures at t = " << time << ": " << *fractures.n_open << " of "
+        << network.n_fracture_faces() << " faces open (measure "
+        << *fractures.open_area << "), " << *fractures.n_slip
+        << " slipping (measure " << *fractures.slip_area
+        << "); largest opening " << largest_opening << " m, largest slip "
+        << largest_slip << " m" << std::endl;
+    out.precision(precision);
   }
 
 
@@ -783,6 +843,7 @@ namespace PolyFrac
                       u_new,
                       p_new,
                       scales(pressure).energy);
+    add_fluid_volumes(flow.flow_step_data(t_new, time_step), u_new, p_new);
     state    = u_new;
     pressure = p_new;
     out << "Step to t = " << t_new << ": monolithic, "
@@ -821,6 +882,7 @@ namespace PolyFrac
       }
     report.energy_residual =
       energy_residual(result.data, u_new, p_new, scale.energy);
+    add_fluid_volumes(result.data, u_new, p_new);
     state    = u_new;
     pressure = p_new;
     summarise_fractures(report);

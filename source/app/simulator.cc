@@ -711,6 +711,7 @@ namespace PolyFrac
             throw StoppedBySignal(signal, message.str());
           }
       }
+    model.print_run_summary(out);
     return newton_iterations;
   }
 

@@ -778,6 +778,29 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::optional<double>
+  Flow<dim>::injection_pressure(const double          time,
+                                const Vector<double> &pressure) const
+  {
+    std::optional<double> largest;
+    const auto            note = [&](const double q, const double p) {
+      if (q > 0)
+        largest = std::max(largest.value_or(p), p);
+    };
+    const std::vector<double> h_m = cell_sources(time);
+    const std::vector<double> p_m = cell_pressures(pressure);
+    for (unsigned int c = 0; c < h_m.size(); ++c)
+      note(h_m[c], p_m[c]);
+    const std::vector<double> h_f = fracture_sources(time);
+    const std::vector<double> p_f = fracture_pressures(pressure);
+    for (unsigned int i = 0; i < h_f.size(); ++i)
+      note(h_f[i], p_f[i]);
+    return largest;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   Flow<dim>::cell_sources(const double time) const
   {

@@ -2,7 +2,8 @@
 the middle and resumed with --resume ends with the same files as the run that
 was not stopped: the same names, the VTU, PVTU and PVD files byte for byte,
 the time series and convergence table equal but for their wall time column
-(the direct solver: serial UMFPACK, MUMPS on ranks). Then checkpoints that
+(the direct solver: serial UMFPACK, MUMPS on ranks), and the same summary
+at its end (the fluid volumes of every step, the fractures). Then checkpoints that
 do not belong to the run are refused with their message: another scene (the
 entry named), another version, a file cut short, no file at all.
 
@@ -66,6 +67,19 @@ whole, stopped = os.path.join(work, "whole"), os.path.join(work, "stopped")
 result = run(whole)
 if result.returncode != 0:
     fail("the whole run failed:\n" + result.stdout + result.stderr)
+
+
+def run_summary(stdout):
+    # The summary at the end: the fluid volumes of all the steps (those
+    # before the checkpoint too) and the fractures.
+    return [line for line in stdout.splitlines()
+            if line.startswith(("Fluid volumes", "Injection pressure",
+                                "Fractures at t"))]
+
+
+whole_summary = run_summary(result.stdout)
+if len(whole_summary) != 3:
+    fail("the whole run prints no summary at its end:\n" + result.stdout)
 steps = n_rows(whole) - 1
 
 # The run stopped by SIGTERM once it has taken 3 steps.
@@ -105,6 +119,9 @@ if "Resumed from <%s> after step %d" % (checkpoint, taken) not in \
         result.stdout:
     fail("the resumed run does not say that it resumed after step %d:\n%s"
          % (taken, result.stdout))
+if run_summary(result.stdout) != whole_summary:
+    fail("the resumed run's summary %s differs from the whole run's %s"
+         % (run_summary(result.stdout), whole_summary))
 names = sorted(os.listdir(whole))
 if sorted(os.listdir(stopped)) != names:
     fail("the files differ: %s against %s"

@@ -8,6 +8,7 @@
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/physics/flow.h>
+#include <polyfrac/postprocessing/fluid_volumes.h>
 
 namespace PolyFrac
 {
@@ -49,6 +50,11 @@ namespace PolyFrac
     void
     load_state(std::istream &in) override;
 
+    /** The fluid volumes of the run (FluidVolumes) and the injection
+     * pressure at its end. */
+    void
+    print_run_summary(std::ostream &out) const override;
+
     types::global_dof_index
     n_unknowns() const override
     {
@@ -84,8 +90,13 @@ namespace PolyFrac
     PressureDoFMap<dim> dofs;
     /** The operator. */
     const Flow<dim> flow;
+    /** The fluid volumes of each step. */
+    const FluidBalance<dim> fluid_balance;
     /** The state: the pressures at the last time reached. */
     Vector<double> pressure;
+    /** The fluid volumes of the steps so far, and the time of the last. */
+    FluidVolumes run_volumes;
+    double       time = 0;
   };
 } // namespace PolyFrac
 

@@ -133,6 +133,12 @@ namespace PolyFrac
     virtual void
     print_step_summary(std::ostream &out) const;
 
+    /** Prints what a time-dependent model reports at the end of a level's
+     * run (e.g. the fluid volumes and the largest slip); the default
+     * prints nothing. */
+    virtual void
+    print_run_summary(std::ostream &out) const;
+
     /**
      * Frees what only the steps need (preconditioners kept from one step
      * to the next); called once the level's last step is done, before its
@@ -217,6 +223,13 @@ namespace PolyFrac
   template <int dim>
   inline void
   Model<dim>::print_step_summary(std::ostream &) const
+  {}
+
+
+
+  template <int dim>
+  inline void
+  Model<dim>::print_run_summary(std::ostream &) const
   {}
 
 

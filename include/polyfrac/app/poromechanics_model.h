@@ -16,6 +16,7 @@
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
 #include <polyfrac/postprocessing/energy_balance.h>
+#include <polyfrac/postprocessing/fluid_volumes.h>
 
 #include <functional>
 #include <memory>
@@ -97,6 +98,15 @@ namespace PolyFrac
 
     void
     load_state(std::istream &in) override;
+
+    /**
+     * The fluid volumes of the run (FluidVolumes, summed over its steps),
+     * and the fractures at its end: the open and slipping faces and their
+     * areas, the largest opening and slip, and the injection pressure (the
+     * largest pressure of a cell or fracture face where a source injects).
+     */
+    void
+    print_run_summary(std::ostream &out) const override;
 
     types::global_dof_index
     n_unknowns() const override;
@@ -298,6 +308,13 @@ namespace PolyFrac
                     const MechanicalState<dim> &guess,
                     MechanicalState<dim>       &result);
 
+    /** Adds the fluid volumes of the step to (@p u_new, @p p_new) from
+     * the state, whose last flow solve used @p data, to #run_volumes. */
+    void
+    add_fluid_volumes(const FlowStepData         &data,
+                      const MechanicalState<dim> &u_new,
+                      const Vector<double>       &p_new);
+
     /** The apertures d_0 − [[u]]_n of @p u per fracture face. */
     std::vector<double>
     apertures(const MechanicalState<dim> &u) const;
@@ -313,6 +330,8 @@ namespace PolyFrac
     Elasticity<dim> elasticity;
     /** The energy balance of each step (doc/energy.md). */
     EnergyBalance<dim> energy_balance;
+    /** The fluid volumes of each step. */
+    FluidBalance<dim> fluid_balance;
     /** The normal face bubbles and the system of the monolithic scheme,
      * when it is used. */
     std::unique_ptr<FaceBubbles<dim>> bubbles;
@@ -336,6 +355,9 @@ namespace PolyFrac
     std::vector<double> initial_cell_pressure;
     /** |K| div_K u^0 per cell, for the porosity. */
     std::vector<double> initial_volume;
+    /** The fluid volumes of the steps so far, and the time of the last. */
+    FluidVolumes run_volumes;
+    double       time = 0;
   };
 } // namespace PolyFrac
 

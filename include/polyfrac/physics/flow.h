@@ -16,6 +16,7 @@
 #include <polyfrac/mesh/mesh_geometry.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace PolyFrac
@@ -158,6 +159,12 @@ namespace PolyFrac
     /** p_K per cell. */
     std::vector<double>
     cell_pressures(const Vector<double> &pressure) const;
+
+    /** The injection pressure at @p time: the largest of @p pressure in
+     * the cells and fracture faces where a source injects (none if no
+     * source does). */
+    std::optional<double>
+    injection_pressure(const double time, const Vector<double> &pressure) const;
 
     /** p_{f,σ} per fracture face. */
     std::vector<double>

@@ -1,0 +1,142 @@
+#include <polyfrac/postprocessing/fluid_volumes.h>
+
+
+namespace PolyFrac
+{
+  FluidVolumes &
+  FluidVolumes::operator+=(const FluidVolumes &other)
+  {
+    injected += other.injected;
+    extracted += other.extracted;
+    outflow += other.outflow;
+    stored_in_matrix += other.stored_in_matrix;
+    stored_in_fractures += other.stored_in_fractures;
+    return *this;
+  }
+
+
+
+  double
+  FluidVolumes::imbalance() const
+  {
+    return stored_in_matrix + stored_in_fractures -
+           (injected - extracted - outflow);
+  }
+
+
+
+  void
+  FluidVolumes::print(std::ostream &out) const
+  {
+    out << "injected " << injected << ", extracted " << extracted
+        << ", out through the boundary " << outflow << ", stored "
+        << stored_in_matrix + stored_in_fractures << " (matrix "
+        << stored_in_matrix << ", fractures " << stored_in_fractures
+        << "); imbalance " << imbalance();
+  }
+
+
+
+  void
+  print_fluid_summary(std::ostream               &out,
+                      const FluidVolumes         &volumes,
+                      const double                time,
+                      const unsigned int          dim,
+                      const std::optional<double> injection_pressure)
+  {
+    const auto precision = out.precision(6);
+    out << "Fluid volumes from t = 0 to " << time
+        << (dim == 2 ? " (m^2 per unit thickness): " : " (m^3): ");
+    volumes.print(out);
+    out << std::endl;
+    if (injection_pressure)
+      out << "Injection pressure at t = " << time << ": " << *injection_pressure
+          << " Pa (the largest where a source injects)" << std::endl;
+    out.precision(precision);
+  }
+
+
+
+  template <int dim>
+  FluidBalance<dim>::FluidBalance(const Parameters           &prm,
+                                  const MeshGeometry<dim>    &geometry,
+                                  const FractureNetwork<dim> &network,
+                                  const FractureEdges<dim>   &edges,
+                                  const PressureDoFMap<dim>  &pressure_dofs,
+                                  const Flow<dim>            &flow)
+    : prm(prm)
+    , geometry(geometry)
+    , network(network)
+    , edges(edges)
+    , pressure_dofs(pressure_dofs)
+    , flow(flow)
+  {}
+
+
+
+  template <int dim>
+  FluidVolumes
+  FluidBalance<dim>::step(const FlowStepData        &data,
+                          const Vector<double>      &p_before,
+                          const Vector<double>      &p_after,
+                          const std::vector<double> &volume_before,
+                          const std::vector<double> &volume_after,
+                          const std::vector<double> &apertures_before) const
+  {
+    const auto  &mesh = geometry.mesh;
+    const double dt   = data.time_step;
+    FluidVolumes volumes;
+    // What a source q per measure puts in or takes out over the step.
+    const auto add_source = [&](const double q, const double measure) {
+      if (q > 0)
+        volumes.injected += dt * measure * q;
+      else
+        volumes.extracted -= dt * measure * q;
+    };
+
+    const std::vector<double> h_m = flow.cell_sources(data.time);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const double measure = geometry.cells[c].measure;
+        const auto   dof     = pressure_dofs.cell_dof(c);
+        add_source(h_m[c], measure);
+        volumes.stored_in_matrix += measure * prm.flow.inverse_biot_modulus *
+                                    (p_after(dof) - p_before(dof));
+        if (!volume_after.empty())
+          volumes.stored_in_matrix +=
+            prm.flow.biot_coefficient * (volume_after[c] - volume_before[c]);
+        const auto darcy = flow.cell_fluxes(c, p_after);
+        const auto increment =
+          flow.increment_fluxes(c, data, p_before, p_after);
+        const auto &faces = mesh.cells[c].faces;
+        for (unsigned int j = 0; j < faces.size(); ++j)
+          if (mesh.faces[faces[j]].at_boundary())
+            volumes.outflow += dt * (darcy[j] + increment[j]);
+      }
+
+    const std::vector<double> h_f = flow.fracture_sources(data.time);
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const double measure =
+          geometry.faces[network.fracture_faces[i].face].measure;
+        const auto dof = pressure_dofs.fracture_face_dof(i);
+        add_source(h_f[i], measure);
+        volumes.stored_in_fractures +=
+          measure * flow.fracture_fluid_storage(data.apertures[i]) *
+          (p_after(dof) - p_before(dof));
+        if (!apertures_before.empty())
+          volumes.stored_in_fractures +=
+            measure * (data.apertures[i] - apertures_before[i]);
+        const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);
+        for (unsigned int k = 0; k < fluxes.size(); ++k)
+          if (!edges.edges[edges.face_edges[i][k].edge].boundary_ids.empty())
+            volumes.outflow += dt * fluxes[k];
+      }
+    return volumes;
+  }
+
+
+
+  template class FluidBalance<2>;
+  template class FluidBalance<3>;
+} // namespace PolyFrac
