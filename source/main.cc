@@ -7,10 +7,13 @@
  * versions of PolyFrac and deal.II.
  */
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
 #include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/simulator.h>
+
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -204,6 +207,30 @@ namespace
     MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
   }
+
+  /**
+   * OpenBLAS built without threads (Debian's libopenblas0-serial) has no
+   * locks: two threads that call it at once share its buffers. The
+   * threaded cell loops (base/cell_loop.h) call LAPACK through deal.II's
+   * FullMatrix (gauss_jordan() of more than 15 rows, the local
+   * reconstructions of large polytopes), and with that library they came
+   * out wrong from run to run (smooth-2d.prm, METIS agglomerates of 8
+   * distorted cells: err_grad_u 0.10 as with the reference BLAS, or 0.34
+   * or 0.66, at the same level). Where it is the BLAS, the cell loops run
+   * on one thread; returns whether they do.
+   */
+  bool
+  limit_threads_for_unlocked_blas()
+  {
+    using Query = int (*)();
+    const auto parallel =
+      reinterpret_cast<Query>(dlsym(RTLD_DEFAULT, "openblas_get_parallel"));
+    if (parallel == nullptr || parallel() != 0 ||
+        MultithreadInfo::n_threads() == 1)
+      return false;
+    MultithreadInfo::set_thread_limit(1);
+    return true;
+  }
 } // namespace
 
 
@@ -250,6 +277,13 @@ main(int argc, char **argv)
       std::ostream &out =
         Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
                                                                 elsewhere;
+      if (limit_threads_for_unlocked_blas())
+        out << "Note: the BLAS is OpenBLAS without threads (Debian's "
+               "libopenblas0-serial), which is not safe to call from "
+               "several threads at once: the cell loops run on one thread. "
+               "libopenblas0-pthread or the reference BLAS (libblas3) lets "
+               "them use every core."
+            << std::endl;
       try
         {
           if (prm.dim == 2)

@@ -649,9 +649,11 @@ namespace PolyFrac
 
     std::set<std::vector<int>> seen_states;
     std::vector<int>           last_states;
-    double                     best_merit = std::numeric_limits<double>::max();
-    unsigned int               best_iteration = 0;
-    const auto                 merit          = [](const Residual &R) {
+    // The iterate before the last step.
+    Vector<double> last_iterate   = x;
+    double         best_merit     = std::numeric_limits<double>::max();
+    unsigned int   best_iteration = 0;
+    const auto     merit          = [](const Residual &R) {
       return R.momentum * R.momentum + R.complementarity * R.complementarity;
     };
 
@@ -685,8 +687,27 @@ namespace PolyFrac
             std::ostringstream symptom;
             symptom << "the momentum residual is " << std::setprecision(3)
                     << R.momentum << " times the load";
-            AssertThrow(false,
-                        ExcMessage(undetermined_message(symptom.str(), it)));
+            singular_jacobian = undetermined_message(symptom.str(), it - 1);
+            // The contact states of the last iterate made the Jacobian
+            // singular: go back to it and linearise with a smaller β, which
+            // weighs the states differently (the solution does not depend
+            // on β).
+            if (it == 1 || !reduce_complementarity_parameter())
+              {
+                out << "  (the step of iteration " << it - 1
+                    << " blew up on a singular Jacobian)" << std::endl;
+                return false;
+              }
+            x = last_iterate;
+            seen_states.clear();
+            last_states.clear();
+            best_merit     = std::numeric_limits<double>::max();
+            best_iteration = it;
+            out << "  (the step of iteration " << it - 1
+                << " blew up on a singular Jacobian: back to its iterate, "
+                   "complementarity parameter divided by 10)"
+                << std::endl;
+            continue;
           }
 
         if (states == last_states && R.momentum < prm.nonlinear.tolerance &&
@@ -719,12 +740,16 @@ namespace PolyFrac
         Vector<double>    step;
         const std::string solve_report =
           linear_step(R, it, continued && it == 1, step);
-        AssertThrow(
-          std::all_of(step.begin(),
-                      step.end(),
-                      [](const double v) { return std::isfinite(v); }),
-          ExcMessage(
-            undetermined_message("the Newton step is not finite", it)));
+        if (!std::all_of(step.begin(), step.end(), [](const double v) {
+              return std::isfinite(v);
+            }))
+          {
+            singular_jacobian =
+              undetermined_message("the Newton step is not finite", it);
+            out << "  (the step of iteration " << it
+                << " is not finite: a singular Jacobian)" << std::endl;
+            return false;
+          }
         if (!solve_report.empty())
           out << "    " << solve_report << std::endl;
 
@@ -742,6 +767,7 @@ namespace PolyFrac
             out << "  (active set cycles: damped step " << alpha << ")"
                 << std::endl;
           }
+        last_iterate = x;
         x.add(alpha, step);
       }
     return false;
@@ -852,10 +878,15 @@ namespace PolyFrac
                 solution         = x;
                 previous_step    = x;
                 reached          = load;
+                singular_jacobian.clear();
               }
             else
               {
                 increment /= 2;
+                // A singular Jacobian on every path: say why.
+                AssertThrow(singular_jacobian.empty() ||
+                              increment > (target - reached) / 32,
+                            ExcMessage(singular_jacobian));
                 AssertThrow(increment > (target - reached) / 32,
                             ExcMessage(
                               "The contact solver did not converge at load "

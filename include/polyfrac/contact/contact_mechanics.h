@@ -338,7 +338,10 @@ namespace PolyFrac
 
     /** Newton on one load step to @p load, from @p x; @p continued: from
      * the states of a converged load step before it. False if it did not
-     * converge. */
+     * converge, or if a step blew up on a (nearly) singular Jacobian: then
+     * #singular_jacobian says where, and solve() cuts the load step, as
+     * for any failure (the contact states of another path may well
+     * determine every unknown). */
     bool
     newton(const double    load,
            const bool      continued,
@@ -399,6 +402,10 @@ namespace PolyFrac
     unsigned int n_beta_reductions = 0;
     /** How many condensed steps fell back to UMFPACK (GMRES failed). */
     unsigned int n_krylov_fallbacks = 0;
+    /** The undetermined_message() of the last Newton step of the current
+     * load step that blew up on a singular Jacobian (empty if none did):
+     * the error once the cuts are spent. */
+    std::string singular_jacobian;
   };
 } // namespace PolyFrac
 
