@@ -132,6 +132,11 @@ long_tests=(
   parallel/poromechanics_2d_slip_2_ranks_newton # 26 s (Release 3 s)
   base/bad_parameters_01 # 30 s
   discretization/hfv_exactness_01 # 34 s
+  # Python drivers of several program runs each (Release 10 s and 3 s),
+  # added when CI had 75 s of room: the run summary and the gmsh scenes run
+  # in Debug through every poromechanics and gmsh program test.
+  polyfrac/user_guide_scenes
+  io/run_summary
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \

@@ -117,7 +117,10 @@ namespace
          "solution\n"
          "  The parameter file and the outputs are described in "
       << source_dir
-      << "/README.md.\n"
+      << "/README.md;\n"
+         "  writing one's own injection scene (2D and 3D, gmsh) in "
+      << source_dir
+      << "/doc/user-guide.md.\n"
          "\n"
          "Scenes, each narrated, in "
       << source_dir << "/prm/, by Model:\n";

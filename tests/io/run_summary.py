@@ -125,7 +125,8 @@ close("slip measure", float(slip_measure), float(last["slip_area"]))
 close("largest opening", float(opening),
       -np.asarray(vtu.point_data["normal_jump"])[first].min())
 close("largest slip", float(slip),
-      np.abs(np.asarray(vtu.point_data["tangential_jump"])[first]).max())
+      np.linalg.norm(np.asarray(vtu.point_data["tangential_jump"])[first],
+                     axis=1).max())
 
 # The fixed-stress split, and a column that drains.
 _, output = run("slip", "poromechanics-2d-slip.prm", "Time/End time=3",
