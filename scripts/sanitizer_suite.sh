@@ -137,6 +137,7 @@ long_tests=(
   # in Debug through every poromechanics and gmsh program test.
   polyfrac/user_guide_scenes
   io/run_summary
+  io/summary_plot
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \
