@@ -138,6 +138,7 @@ long_tests=(
   polyfrac/user_guide_scenes
   io/run_summary
   io/summary_plot
+  io/progress_line
 )
 
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DPOLYFRAC_SANITIZE=ON \

@@ -3,11 +3,13 @@
 
 #include <polyfrac/app/poromechanical_newton.h>
 #include <polyfrac/base/mpi.h>
+#include <polyfrac/base/progress_line.h>
 #include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/physics/biot_system.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -32,6 +34,25 @@ namespace PolyFrac
           size = std::max(size, std::abs(x(k)));
         }
       return size > 0 ? step / size : 0.;
+    }
+
+    /** The status line of Newton iteration @p k. */
+    std::string
+    iteration_status(const unsigned int   k,
+                     const double         increment,
+                     const ContactStates &states)
+    {
+      const auto count = [](const auto &list, const auto value) {
+        return std::count(list.begin(), list.end(), value);
+      };
+      std::ostringstream status;
+      status << "Newton iteration " << k << ", relative increment "
+             << std::scientific << std::setprecision(2) << increment
+             << "; faces " << count(states.normal, NormalState::open)
+             << " open, " << count(states.tangential, TangentialState::stick)
+             << " stick, " << count(states.tangential, TangentialState::slip)
+             << " slip";
+      return status.str();
     }
   } // namespace
 
@@ -554,6 +575,7 @@ namespace PolyFrac
     Vector<double>             residual;
     const std::vector<double> &increments = result.increments;
     ContactStates              states;
+    StepProgress               progress;
     try
       {
         states = linearise(x, start, data, residual);
@@ -609,6 +631,7 @@ namespace PolyFrac
             const bool   again     = n > 0 && increments[n - 1] <= tolerance;
             result.increments.push_back(increment);
             result.iterations = k;
+            progress.show(iteration_status(k, increment, states));
             if (increment < best_increment)
               {
                 best_increment = increment;

@@ -1,5 +1,6 @@
 #include <polyfrac/app/poromechanics_model.h>
 #include <polyfrac/base/anderson_acceleration.h>
+#include <polyfrac/base/progress_line.h>
 #include <polyfrac/postprocessing/analytic_solutions.h>
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -454,6 +455,7 @@ namespace PolyFrac
     double                   increment = 0;
     AndersonAcceleration     anderson(prm.nonlinear.anderson_depth);
     std::vector<NormalState> previous_normal;
+    StepProgress             progress;
     try
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_coupling_iterations;
@@ -487,6 +489,10 @@ namespace PolyFrac
             u_k                        = u_next;
             p_k                        = p_next;
             report.coupling_iterations = k;
+            std::ostringstream status;
+            status << "coupling iteration " << k << ", relative increment "
+                   << std::scientific << std::setprecision(2) << increment;
+            progress.show(status.str());
             if (increment <= tolerance)
               break;
           }

@@ -9,6 +9,7 @@
 #include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/base/mpi.h>
+#include <polyfrac/base/progress_line.h>
 #include <polyfrac/postprocessing/verification.h>
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -182,6 +183,33 @@ namespace PolyFrac
       out << ',';
       if (value)
         out << *value;
+    }
+
+
+    /**
+     * Sets the run state of the status line (ProgressLine) before step
+     * @p step, from @p t_old to @p t_new: the share of the simulated time
+     * from @p t_start to @p t_end done, the wall time @p elapsed it took,
+     * and the time to go if the rest goes at the same pace.
+     */
+    void
+    show_run_state(const unsigned int step,
+                   const double       t_old,
+                   const double       t_new,
+                   const double       t_start,
+                   const double       t_end,
+                   const double       elapsed)
+    {
+      if (!progress_line().is_active())
+        return;
+      std::ostringstream state;
+      state << "step " << step << ", t = " << t_old << " -> " << t_new << " of "
+            << t_end << "; " << std::fixed << std::setprecision(0) << elapsed
+            << " s so far";
+      if (t_old > t_start)
+        state << ", about " << elapsed / (t_old - t_start) * (t_end - t_old)
+              << " s to go";
+      progress_line().set_run_state(state.str());
     }
   } // namespace
 
@@ -658,12 +686,20 @@ namespace PolyFrac
     // SIGINT or SIGTERM stop the run after the step in progress, with a
     // checkpoint.
     const StopSignals signals;
+    const Timer       run;
+    const double      t_start = stepping.current_time();
     while (!stepping.is_at_end())
       {
         Timer        wall;
         const double t_old = stepping.current_time();
         const double t_new = stepping.next_time();
-        StepReport   report;
+        show_run_state(stepping.step_number() + 1,
+                       t_old,
+                       t_new,
+                       t_start,
+                       prm.time.end_time,
+                       run.wall_time());
+        StepReport report;
         {
           TimerOutput::Scope section(timer, "solve");
           report = model.step(t_old, t_new, out);
