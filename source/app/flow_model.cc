@@ -9,26 +9,6 @@
 
 namespace PolyFrac
 {
-  namespace
-  {
-    const char *const components[] = {"_x", "_y", "_z"};
-
-    /** One ScalarField per component of @p vectors, named @p name_x, ... */
-    template <int dim>
-    std::vector<ScalarField>
-    component_fields(const std::string                 &name,
-                     const std::vector<Tensor<1, dim>> &vectors)
-    {
-      std::vector<ScalarField> fields(dim);
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          fields[d].name = name + components[d];
-          for (const Tensor<1, dim> &v : vectors)
-            fields[d].values.push_back(v[d]);
-        }
-      return fields;
-    }
-  } // namespace
 
 
 
@@ -177,11 +157,9 @@ namespace PolyFrac
   PatchData<dim, dim>
   FlowModel<dim>::matrix_output() const
   {
-    std::vector<ScalarField> fields = {
-      {"pressure", flow.cell_pressures(pressure)}};
-    for (auto &field : component_fields<dim>("darcy_velocity",
-                                             flow.darcy_velocities(pressure)))
-      fields.push_back(field);
+    const std::vector<OutputField> fields = {
+      {"pressure", flow.cell_pressures(pressure)},
+      vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))};
     return matrix_patches<dim>(*discretization.geometry,
                                *discretization.network,
                                *discretization.dofs,
@@ -196,14 +174,12 @@ namespace PolyFrac
   PatchData<dim - 1, dim>
   FlowModel<dim>::fracture_output() const
   {
-    const std::vector<double> apertures = flow.flow_step_data(0, 1).apertures;
-    std::vector<ScalarField>  fields    = {
-          {"fracture_pressure", flow.fracture_pressures(pressure)}};
-    for (auto &field :
-         component_fields<dim>("fracture_flux",
-                               flow.fracture_velocities(apertures, pressure)))
-      fields.push_back(field);
-    fields.push_back({"aperture", apertures});
+    const std::vector<double> apertures   = flow.flow_step_data(0, 1).apertures;
+    const std::vector<OutputField> fields = {
+      {"fracture_pressure", flow.fracture_pressures(pressure)},
+      vector_field<dim>("fracture_flux",
+                        flow.fracture_velocities(apertures, pressure)),
+      {"aperture", apertures}};
     return fracture_patches<dim>(*discretization.geometry,
                                  *discretization.network,
                                  *discretization.dofs,

@@ -945,12 +945,15 @@ namespace PolyFrac
         prm.flow.biot_coefficient * (volume[c] - initial_volume[c]) /
           discretization.geometry->cells[c].measure +
         (p[c] - initial_cell_pressure[c]) * prm.flow.inverse_biot_modulus;
-    return matrix_patches<dim>(*discretization.geometry,
-                               *discretization.network,
-                               *discretization.dofs,
-                               &elasticity,
-                               &state,
-                               {{"pressure", p}, {"porosity", porosity}});
+    return matrix_patches<dim>(
+      *discretization.geometry,
+      *discretization.network,
+      *discretization.dofs,
+      &elasticity,
+      &state,
+      {{"pressure", p},
+       {"porosity", porosity},
+       vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))});
   }
 
 
@@ -959,13 +962,16 @@ namespace PolyFrac
   PatchData<dim - 1, dim>
   PoromechanicsModel<dim>::fracture_output() const
   {
-    return fracture_patches<dim>(*discretization.geometry,
-                                 *discretization.network,
-                                 *discretization.dofs,
-                                 &state,
-                                 {{"fracture_pressure",
-                                   flow.fracture_pressures(pressure)},
-                                  {"aperture", apertures(state)}});
+    const std::vector<double> d = apertures(state);
+    return fracture_patches<dim>(
+      *discretization.geometry,
+      *discretization.network,
+      *discretization.dofs,
+      &state,
+      {{"fracture_pressure", flow.fracture_pressures(pressure)},
+       vector_field<dim>("fracture_flux",
+                         flow.fracture_velocities(d, pressure)),
+       {"aperture", d}});
   }
 
 

@@ -843,6 +843,7 @@ namespace PolyFrac
   {
     set_solution(state);
     previous_step = solution;
+    singular_jacobian.clear();
     if (guess && prm.contact.n_load_steps == 1)
       set_solution(*guess);
 

@@ -160,7 +160,7 @@ namespace PolyFrac
                  const DoFMap<dim>                &dofs,
                  const Elasticity<dim> *const      elasticity,
                  const MechanicalState<dim> *const state,
-                 const std::vector<ScalarField>   &cell_fields)
+                 const std::vector<OutputField>   &cell_fields)
   {
     using namespace DataComponentInterpretation;
     const bool         mechanics = elasticity != nullptr && state != nullptr;
@@ -169,8 +169,11 @@ namespace PolyFrac
       fields = {{"displacement", dim, component_is_part_of_vector},
                 {"stress", dim * dim, component_is_part_of_tensor}};
     fields.push_back({"polytope", 1, component_is_scalar});
-    for (const ScalarField &field : cell_fields)
-      fields.push_back({field.name, 1, component_is_scalar});
+    for (const OutputField &field : cell_fields)
+      fields.push_back({field.name,
+                        field.n_components,
+                        field.n_components == 1 ? component_is_scalar :
+                                                  component_is_part_of_vector});
     PatchData<dim, dim> data           = layout<dim, dim>(fields);
     const unsigned int  n_components   = data.names.size();
     const unsigned int  first_constant = mechanics ? dim : 0;
@@ -204,8 +207,9 @@ namespace PolyFrac
                     sigma[Tensor<2, dim>::unrolled_to_component_indices(c)]);
               }
             cell_values.push_back(K);
-            for (const ScalarField &field : cell_fields)
-              cell_values.push_back(field.values[K]);
+            for (const OutputField &field : cell_fields)
+              for (unsigned int c = 0; c < field.n_components; ++c)
+                cell_values.push_back(field.values[K * field.n_components + c]);
             cached = K;
           }
         std::vector<Point<dim>> vertices;
@@ -239,7 +243,7 @@ namespace PolyFrac
                    const FractureNetwork<dim>       &network,
                    const DoFMap<dim>                &dofs,
                    const MechanicalState<dim> *const state,
-                   const std::vector<ScalarField>   &face_fields)
+                   const std::vector<OutputField>   &face_fields)
   {
     using namespace DataComponentInterpretation;
     std::vector<Field> fields = {{"fracture", 1, component_is_scalar},
@@ -259,8 +263,11 @@ namespace PolyFrac
         fields.push_back({"normal_state", 1, component_is_scalar});
         fields.push_back({"tangential_state", 1, component_is_scalar});
       }
-    for (const ScalarField &field : face_fields)
-      fields.push_back({field.name, 1, component_is_scalar});
+    for (const OutputField &field : face_fields)
+      fields.push_back({field.name,
+                        field.n_components,
+                        field.n_components == 1 ? component_is_scalar :
+                                                  component_is_part_of_vector});
     PatchData<dim - 1, dim> data         = layout<dim - 1, dim>(fields);
     const unsigned int      n_components = data.names.size();
 
@@ -288,8 +295,9 @@ namespace PolyFrac
               values.push_back(static_cast<int>(state->contact.normal[i]));
               values.push_back(static_cast<int>(state->contact.tangential[i]));
             }
-          for (const ScalarField &field : face_fields)
-            values.push_back(field.values[i]);
+          for (const OutputField &field : face_fields)
+            for (unsigned int c = 0; c < field.n_components; ++c)
+              values.push_back(field.values[i * field.n_components + c]);
           for (const auto &[type, vertices] :
                face_pieces(geometry.mesh.vertices,
                            geometry.mesh.faces[ff.face].vertices))
@@ -480,26 +488,26 @@ namespace PolyFrac
                  const DoFMap<2> &,
                  const Elasticity<2> *const,
                  const MechanicalState<2> *const,
-                 const std::vector<ScalarField> &);
+                 const std::vector<OutputField> &);
   template PatchData<1, 2>
   fracture_patches(const MeshGeometry<2> &,
                    const FractureNetwork<2> &,
                    const DoFMap<2> &,
                    const MechanicalState<2> *const,
-                   const std::vector<ScalarField> &);
+                   const std::vector<OutputField> &);
   template PatchData<3, 3>
   matrix_patches(const MeshGeometry<3> &,
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
                  const Elasticity<3> *const,
                  const MechanicalState<3> *const,
-                 const std::vector<ScalarField> &);
+                 const std::vector<OutputField> &);
   template PatchData<2, 3>
   fracture_patches(const MeshGeometry<3> &,
                    const FractureNetwork<3> &,
                    const DoFMap<3> &,
                    const MechanicalState<3> *const,
-                   const std::vector<ScalarField> &);
+                   const std::vector<OutputField> &);
   template void
   VtuSeries::write(const PatchData<2, 2> &, const double);
   template void

@@ -12,7 +12,9 @@ a time-dependent run:
   injection pressure is the largest fracture pressure of those faces; the
   largest opening and slip are the largest -normal_jump and
   |tangential_jump| of the VTU; the open and slipping measures are those of
-  the last row of the time series;
+  the last row of the time series; the fracture flux and the Darcy
+  velocity are vectors (3 components in the VTU), the flux in the plane of
+  each face, and not zero;
 - the slip scene (prm/poromechanics-2d-slip.prm: the fixed-stress split)
   and Terzaghi's column (prm/b4-terzaghi.prm: drained at the top, the
   monolithic Biot system without fractures), where fluid flows out;
@@ -127,6 +129,23 @@ close("largest opening", float(opening),
 close("largest slip", float(slip),
       np.linalg.norm(np.asarray(vtu.point_data["tangential_jump"])[first],
                      axis=1).max())
+
+# The flow fields of poromechanics are vectors: the fracture flux lies in
+# the plane of each face, and fluid moves.
+flux = np.asarray(vtu.point_data["fracture_flux"])[first]
+normal = np.asarray(vtu.point_data["n_plus"])[first]
+size = np.linalg.norm(flux, axis=1)
+if flux.shape[1] != 3 or not size.max() > 0:
+    sys.exit(f"default scene: fracture_flux is not a moving vector field "
+             f"(shape {flux.shape}, largest {size.max()})")
+if np.abs((flux * normal).sum(axis=1)).max() > 1e-5 * size.max():
+    sys.exit("default scene: fracture_flux leaves the plane of its face")
+solution = meshio.read(os.path.join(directory, "solution-level-0-0003.vtu"))
+darcy = np.asarray(solution.point_data["darcy_velocity"])
+if darcy.shape[1] != 3 or not np.abs(darcy).max() > 0:
+    sys.exit(f"default scene: darcy_velocity is not a moving vector field")
+print(f"default scene: largest fracture flux {size.max()} m^2/s, largest "
+      f"Darcy velocity {np.linalg.norm(darcy, axis=1).max()} m/s")
 
 # The fixed-stress split, and a column that drains.
 _, output = run("slip", "poromechanics-2d-slip.prm", "Time/End time=3",

@@ -47,15 +47,34 @@ namespace PolyFrac
       ranges;
   };
 
-  /** A scalar field with one value per polytope (matrix output) or per
-   * fracture face (fracture output), written as constant patch data. */
-  struct ScalarField
+  /** A scalar or vector field with one value per polytope (matrix output)
+   * or per fracture face (fracture output), written as constant patch
+   * data: a VTU array of one component, or of 3 for a vector (deal.II pads
+   * 2D vectors with a zero). */
+  struct OutputField
   {
     /** The name of the data array in the VTU file. */
     std::string name;
-    /** One value per polytope or per fracture face. */
+    /** One value per polytope or per fracture face, or, for a vector
+     * field, its n_components components one after the other. */
     std::vector<double> values;
+    /** 1 for a scalar, the dimension for a vector. */
+    unsigned int n_components = 1;
   };
+
+  /** The vector field @p name of @p vectors (one per polytope or fracture
+   * face). */
+  template <int dim>
+  OutputField
+  vector_field(const std::string                 &name,
+               const std::vector<Tensor<1, dim>> &vectors)
+  {
+    OutputField field{name, {}, dim};
+    for (const Tensor<1, dim> &v : vectors)
+      for (unsigned int d = 0; d < dim; ++d)
+        field.values.push_back(v[d]);
+    return field;
+  }
 
   /**
    * The matrix output: one patch per cell of the underlying deal.II mesh
@@ -76,7 +95,7 @@ namespace PolyFrac
                  const DoFMap<dim>                &dofs,
                  const Elasticity<dim> *const      elasticity,
                  const MechanicalState<dim> *const state,
-                 const std::vector<ScalarField>   &cell_fields = {});
+                 const std::vector<OutputField>   &cell_fields = {});
 
   /**
    * The fracture output: patches of dimension dim-1, one per fracture face
@@ -97,7 +116,7 @@ namespace PolyFrac
                    const FractureNetwork<dim>       &network,
                    const DoFMap<dim>                &dofs,
                    const MechanicalState<dim> *const state,
-                   const std::vector<ScalarField>   &face_fields = {});
+                   const std::vector<OutputField>   &face_fields = {});
 
   /**
    * A series of VTU files over one time axis and its `.pvd` record, written
