@@ -152,6 +152,8 @@ long_tests=(
   base/expressions_01 # 21 s
   postprocessing/analytic_solutions_01 # 20 s
   postprocessing/analytic_solutions_02 # 18 s
+  # It reads the output of analytic_solutions_01 (left out above).
+  postprocessing/analytic_solutions_numpy
   io/fracture_summary # 19 s
   library/downstream # 20 s
   # Two ranks hold both cores: 3D elasticity on 2 ranks stays through
