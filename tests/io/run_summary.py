@@ -28,8 +28,6 @@ Exits non-zero on the first failed check.
 import csv
 import os
 import re
-import shutil
-import subprocess
 import sys
 
 try:
@@ -40,49 +38,17 @@ except ImportError as error:
              "(apt-get install python3-meshio) and run with /usr/bin/python3")
 
 program, source, work = sys.argv[1:4]
-NUMBER = r"([-+0-9.eE]+)"
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_summary import NUMBER, fluid_volumes, run_scene  # noqa: E402
 
 
 def run(name, scene, *settings):
-    """Runs a scene into WORK/name; returns its standard output."""
-    directory = os.path.join(work, name)
-    shutil.rmtree(directory, ignore_errors=True)
-    os.makedirs(directory)
-    arguments = [program, os.path.join(source, "prm", scene),
-                 "--set", "Output/Output directory=" + directory]
-    for setting in settings:
-        arguments += ["--set", setting]
-    output = subprocess.run(arguments, check=True, capture_output=True,
-                            text=True).stdout
-    return directory, output
+    return run_scene(program, source, work, name, scene, *settings)
 
 
 def volumes(name, output):
-    """The volumes of the summary, checked to balance."""
-    match = re.search(r"Fluid volumes from t = 0 to .*: injected " + NUMBER +
-                      r", extracted " + NUMBER +
-                      r", out through the boundary " + NUMBER +
-                      r", stored " + NUMBER + r" \(matrix " + NUMBER +
-                      r", fractures " + NUMBER + r"\); imbalance " + NUMBER,
-                      output)
-    if not match:
-        sys.exit(f"{name}: no line 'Fluid volumes ...' at the end")
-    injected, extracted, outflow, stored, matrix, fractures, imbalance = \
-        map(float, match.groups())
-    largest = max(map(abs, (injected, extracted, outflow, matrix, fractures)))
-    if largest == 0:
-        sys.exit(f"{name}: every volume is zero: the balance tests nothing")
-    if abs(stored - (matrix + fractures)) > 1e-3 * largest:
-        sys.exit(f"{name}: stored {stored} is not matrix + fractures")
-    computed = stored - (injected - extracted - outflow)
-    if abs(computed) > 1e-3 * largest:
-        sys.exit(f"{name}: the volumes printed do not add up ({computed})")
-    if abs(imbalance) > 1e-9 * largest:
-        sys.exit(f"{name}: the fluid volumes are off by {imbalance}, more "
-                 f"than 1e-9 of the largest volume {largest}")
-    print(f"{name}: injected {injected}, out {outflow}, stored {stored}, "
-          f"imbalance {imbalance}")
-    return injected, outflow
+    v = fluid_volumes(name, output)
+    return v["injected"], v["outflow"]
 
 
 def close(name, value, expected, tolerance=1e-5):

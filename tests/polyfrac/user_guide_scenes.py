@@ -22,9 +22,6 @@ Exits non-zero on the first failed check.
 """
 import csv
 import os
-import re
-import shutil
-import subprocess
 import sys
 
 try:
@@ -35,39 +32,18 @@ except ImportError as error:
              "(apt-get install python3-meshio) and run with /usr/bin/python3")
 
 program, source, work = sys.argv[1:4]
-NUMBER = r"([-+0-9.eE]+)"
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                os.pardir, "io"))
+from scene_summary import fluid_volumes, run_scene  # noqa: E402
 Q = 2e-5
 
 
 def run(name, scene, *settings):
-    """Runs a scene into WORK/name; returns the directory and stdout."""
-    directory = os.path.join(work, name)
-    shutil.rmtree(directory, ignore_errors=True)
-    os.makedirs(directory)
-    arguments = [program, os.path.join(source, "prm", scene),
-                 "--set", "Output/Output directory=" + directory]
-    for setting in settings:
-        arguments += ["--set", setting]
-    result = subprocess.run(arguments, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit(f"{name}: exit {result.returncode}\n{result.stderr}")
-    return directory, result.stdout
+    return run_scene(program, source, work, name, scene, *settings)
 
 
 def injected(name, output):
-    """The injected volume of the summary, the volumes checked to balance."""
-    match = re.search(r"injected " + NUMBER + r", extracted " + NUMBER +
-                      r", out through the boundary " + NUMBER +
-                      r", stored " + NUMBER + r" .*; imbalance " + NUMBER,
-                      output)
-    if not match:
-        sys.exit(f"{name}: no line 'Fluid volumes ...' at the end")
-    volume, extracted, outflow, stored, imbalance = map(float,
-                                                        match.groups())
-    largest = max(abs(volume), abs(extracted), abs(outflow), abs(stored))
-    if not abs(imbalance) <= 1e-9 * largest:
-        sys.exit(f"{name}: the fluid volumes are off by {imbalance}")
-    return volume
+    return fluid_volumes(name, output)["injected"]
 
 
 def close(name, value, expected, tolerance=1e-5):
