@@ -10,6 +10,8 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/lac/sparse_direct.h>
+
 #include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/simulator.h>
 
@@ -183,6 +185,13 @@ namespace
     setenv("OMPI_MCA_btl", "self,vader", 0);
   }
 
+  /** What to do when the run needs more memory than it can have. */
+  const std::string out_of_memory_advice =
+    "The mesh or its linear systems need more memory than this machine has: "
+    "lower Mesh/Subdivisions, Mesh/Global refinements or Convergence "
+    "study/Number of refinement levels, or use Linear solver/Method = AMG "
+    "(UMFPACK's factors need the most memory).";
+
   /**
    * Prints why the run stopped and returns the exit status 1. Under mpirun
    * the rank that stops (the first, if several do) names itself and stops
@@ -303,6 +312,17 @@ main(int argc, char **argv)
           return 128 + e.signal;
         }
     }
+  catch (const SparseDirectUMFPACK::ExcUMFPACKError &e)
+    {
+      // UMFPACK_ERROR_out_of_memory is -1; deal.II's message for it lists
+      // the causes of every error status.
+      std::ostringstream info;
+      e.print_info(info);
+      return stop(info.str().find("returned error status -1.") !=
+                      std::string::npos ?
+                    "UMFPACK ran out of memory. " + out_of_memory_advice :
+                    Utilities::trim(info.str()));
+    }
   catch (const ExceptionBase &e)
     {
       std::ostringstream info;
@@ -311,12 +331,7 @@ main(int argc, char **argv)
     }
   catch (const std::bad_alloc &)
     {
-      return stop(
-        "out of memory (std::bad_alloc). The mesh or "
-        "its linear systems need more memory than this machine has: "
-        "lower Mesh/Subdivisions, Mesh/Global refinements or Convergence "
-        "study/Number of refinement levels, or use Linear solver/Method = "
-        "AMG (UMFPACK's factors need the most memory).");
+      return stop("out of memory (std::bad_alloc). " + out_of_memory_advice);
     }
   catch (const std::exception &e)
     {

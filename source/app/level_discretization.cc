@@ -90,7 +90,10 @@ namespace PolyFrac
                       "mesh and list them in Fractures/Gmsh physical "
                       "tags."));
         gmsh_as_read = std::make_shared<const GmshMesh<dim>>(
-          read_gmsh(prm, prm.mesh.global_refinements + level, triangulation));
+          read_gmsh(prm,
+                    prm.mesh.global_refinements + level,
+                    communicator,
+                    triangulation));
       }
     else
       MeshBuilder::make_box(prm, level, triangulation);

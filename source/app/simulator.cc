@@ -396,7 +396,10 @@ namespace PolyFrac
   {
     for (const std::string &warning : prm.warnings)
       out << "Warning: " << warning << std::endl;
-    check_memory(prm);
+    check_memory(prm,
+                 estimated_n_cells(prm),
+                 n_ranks_on_this_node(communicator),
+                 n_mpi_ranks(communicator));
     check_distributable();
     const bool root = is_root_rank(communicator);
     if (root)

@@ -4,6 +4,25 @@
 
 namespace PolyFrac
 {
+  unsigned int
+  n_ranks_on_this_node(const MPI_Comm communicator)
+  {
+    if (!Utilities::MPI::job_supports_mpi())
+      return 1;
+    MPI_Comm  node;
+    const int ierr = MPI_Comm_split_type(communicator,
+                                         MPI_COMM_TYPE_SHARED,
+                                         this_mpi_rank(communicator),
+                                         MPI_INFO_NULL,
+                                         &node);
+    AssertThrowMPI(ierr);
+    const unsigned int n = Utilities::MPI::n_mpi_processes(node);
+    Utilities::MPI::free_communicator(node);
+    return n;
+  }
+
+
+
   void
   make_distributed_pattern(const DynamicSparsityPattern      &entries,
                            const IndexSet                    &owned,

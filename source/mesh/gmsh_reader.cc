@@ -5,6 +5,8 @@
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <polyfrac/base/memory_estimate.h>
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/mesh/gmsh_reader.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
@@ -13,6 +15,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -26,7 +29,8 @@ namespace PolyFrac
      * gmsh is a global state: initialised here (quietly, one thread, no
      * user configuration files, so the mesh does not depend on the
      * machine) and finalised when the object goes out of scope, also when
-     * an exception leaves read_gmsh().
+     * an exception leaves read_gmsh(), unless gmsh ran out of memory
+     * (abandon()).
      */
     class GmshSession
     {
@@ -39,15 +43,31 @@ namespace PolyFrac
         gmsh::option::setNumber("General.NumThreads", 1);
       }
 
-      /** Finalises gmsh. */
+      /** Finalises gmsh (unless abandoned). */
       ~GmshSession()
       {
-        gmsh::finalize();
+        if (!abandoned)
+          gmsh::finalize();
+      }
+
+      /**
+       * Leaves gmsh as it is at the end of the session: after a failed
+       * allocation its model is half built, and finalising it crashes
+       * (GFace::deleteMesh), so the memory is left to the ending process.
+       */
+      void
+      abandon()
+      {
+        abandoned = true;
       }
 
       GmshSession(const GmshSession &) = delete;
       GmshSession &
       operator=(const GmshSession &) = delete;
+
+    private:
+      /** Whether abandon() was called. */
+      bool abandoned = false;
     };
 
     /**
@@ -223,28 +243,26 @@ namespace PolyFrac
     };
 
     /**
-     * Opens @p file_name in gmsh, meshes it if it is a `.geo` and refines
-     * it @p n_refinements times; turns gmsh's errors into an ExcMessage.
+     * Runs @p step, a call of gmsh on @p file_name: gmsh's errors
+     * (AbortOnError = 2 throws and keeps the message) become an
+     * ExcMessage naming the file; a failed allocation stays a
+     * std::bad_alloc (main() says what to lower) and abandons @p session.
      */
+    template <typename Step>
     void
-    open_and_mesh(const std::string &file_name,
-                  const int          dim,
-                  const unsigned int n_refinements)
+    run_gmsh(GmshSession &session, const std::string &file_name, Step step)
     {
       try
         {
-          gmsh::open(file_name);
-          const bool is_geo =
-            file_name.size() >= 4 &&
-            file_name.compare(file_name.size() - 4, 4, ".geo") == 0;
-          if (is_geo)
-            gmsh::model::mesh::generate(dim);
-          for (unsigned int r = 0; r < n_refinements; ++r)
-            gmsh::model::mesh::refine();
+          step();
+        }
+      catch (const std::bad_alloc &)
+        {
+          session.abandon();
+          throw;
         }
       catch (...)
         {
-          // gmsh (AbortOnError = 2) throws on errors and keeps the message.
           std::string error;
           gmsh::logger::getLastError(error);
           AssertThrow(false,
@@ -252,6 +270,51 @@ namespace PolyFrac
                                  "> cannot be read or meshed by gmsh" +
                                  (error.empty() ? "." : ": " + error)));
         }
+    }
+
+    /** The number of dim-dimensional elements of gmsh's current model. */
+    double
+    n_elements(const int dim)
+    {
+      std::vector<int>                      types;
+      std::vector<std::vector<std::size_t>> element_tags, node_tags;
+      gmsh::model::mesh::getElements(types, element_tags, node_tags, dim);
+      double n = 0;
+      for (const std::vector<std::size_t> &tags : element_tags)
+        n += tags.size();
+      return n;
+    }
+
+    /**
+     * Opens Mesh/File name in gmsh and meshes it if it is a `.geo`;
+     * refuses (check_memory()) a refinement whose cells would not fit in
+     * the memory of this node, shared by its ranks of @p communicator;
+     * refines @p n_refinements times.
+     */
+    void
+    open_and_mesh(GmshSession       &session,
+                  const Parameters  &prm,
+                  const int          dim,
+                  const unsigned int n_refinements,
+                  const MPI_Comm     communicator)
+    {
+      const std::string &file_name = prm.mesh.file_name;
+      run_gmsh(session, file_name, [&]() {
+        gmsh::open(file_name);
+        const bool is_geo =
+          file_name.size() >= 4 &&
+          file_name.compare(file_name.size() - 4, 4, ".geo") == 0;
+        if (is_geo)
+          gmsh::model::mesh::generate(dim);
+      });
+      check_memory(prm,
+                   n_elements(dim) * std::pow(2., dim * n_refinements),
+                   n_ranks_on_this_node(communicator),
+                   n_mpi_ranks(communicator));
+      run_gmsh(session, file_name, [&]() {
+        for (unsigned int r = 0; r < n_refinements; ++r)
+          gmsh::model::mesh::refine();
+      });
     }
 
     /** The coordinates of the vertices (the nodes of the cells). */
@@ -458,6 +521,7 @@ namespace PolyFrac
   GmshMesh<dim>
   read_gmsh(const Parameters   &prm,
             const unsigned int  n_refinements,
+            const MPI_Comm      communicator,
             Triangulation<dim> &tria)
   {
     const std::string &file_name = prm.mesh.file_name;
@@ -466,6 +530,7 @@ namespace PolyFrac
                            "> cannot be opened: check Mesh/File name."));
 #ifndef POLYFRAC_WITH_GMSH_API
     (void)n_refinements;
+    (void)communicator;
     (void)tria;
     AssertThrow(false,
                 ExcMessage("Cannot read the gmsh mesh <" + file_name +
@@ -476,7 +541,7 @@ namespace PolyFrac
 #else
     const std::string in_file = "The gmsh mesh <" + file_name + ">";
     GmshSession       session;
-    open_and_mesh(file_name, dim, n_refinements);
+    open_and_mesh(session, prm, dim, n_refinements, communicator);
     // gmsh reports an empty model (an empty or foreign file) as of
     // dimension -1.
     AssertThrow(gmsh::model::getDimension() >= 0,
@@ -578,7 +643,10 @@ namespace PolyFrac
 
 
   template GmshMesh<2>
-  read_gmsh(const Parameters &, const unsigned int, Triangulation<2> &);
+  read_gmsh(const Parameters &,
+            const unsigned int,
+            const MPI_Comm,
+            Triangulation<2> &);
   template GmshMesh<2>
   fracture_elements_after_refinement(const GmshMesh<2> &,
                                      const Triangulation<2> &);
@@ -586,5 +654,8 @@ namespace PolyFrac
   fracture_elements_after_refinement(const GmshMesh<3> &,
                                      const Triangulation<3> &);
   template GmshMesh<3>
-  read_gmsh(const Parameters &, const unsigned int, Triangulation<3> &);
+  read_gmsh(const Parameters &,
+            const unsigned int,
+            const MPI_Comm,
+            Triangulation<3> &);
 } // namespace PolyFrac

@@ -50,6 +50,8 @@ BOX_GEO = ("Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
            "Plane Surface(1) = {1};\n"
            "Physical Curve(1) = {1, 2, 3, 4};\n"
            "Physical Surface(100) = {1};\n")
+# The same box meshed 20 times finer along its sides (944 triangles).
+FINE_BOX_GEO = BOX_GEO.replace(", 0, 1};", ", 0, 0.1};")
 CONTACT = "subsection Model\n  set Model = contact mechanics\nend\n"
 FLOW = "subsection Model\n  set Model = flow\nend\n"
 
@@ -693,6 +695,39 @@ CASES = {
                                     File_name="empty.msh"),
                "empty.msh": ""},
         stage="level"),
+    "gmsh_refinement_too_large": case(
+        "`Global refinements = 9` of a gmsh mesh of 944 triangles (the "
+        "memory estimate skipped gmsh meshes)",
+        ["the finest mesh would have about 2.47e+08 cells",
+         "Lower Mesh/Global refinements or coarsen the gmsh mesh <box.geo>"],
+        files={"scene.prm": section("Mesh", Source="gmsh",
+                                    File_name="box.geo",
+                                    Global_refinements="9"),
+               "box.geo": FINE_BOX_GEO},
+        stage="level"),
+    "gmsh_refinement_out_of_memory": case(
+        "`Global refinements = 5` of a gmsh mesh of 944 triangles, run "
+        "with 1 GB of address space (was a segmentation fault in "
+        "gmsh::finalize)",
+        ["out of memory (std::bad_alloc)", "lower Mesh/Subdivisions, "
+         "Mesh/Global refinements"],
+        files={"scene.prm": section("Mesh", Source="gmsh",
+                                    File_name="box.geo",
+                                    Global_refinements="5"),
+               "box.geo": FINE_BOX_GEO},
+        stage="level", absent=["cannot be read or meshed"],
+        address_space=10**9),
+    "umfpack_out_of_memory": case(
+        "`Global refinements = 4` of a gmsh mesh of 944 triangles (241,664 "
+        "cells), run with 1 GB of address space (was UMFPACK's list of "
+        "the causes of every error status; where the memory runs out, in "
+        "UMFPACK or before, depends on the machine)",
+        ["out of memory", "use Linear solver/Method = AMG"],
+        files={"scene.prm": section("Mesh", Source="gmsh",
+                                    File_name="box.geo",
+                                    Global_refinements="4"),
+               "box.geo": FINE_BOX_GEO},
+        stage="level", absent=["rank deficient"], address_space=10**9),
     "gmsh_physical_tag_twice": case(
         "`Fractures/Gmsh physical tags = 11, 11` (made two coincident "
         "fractures)",

@@ -88,7 +88,7 @@ main()
                  Parameters prm = parameters(2, "gmsh_01.geo");
                  prm.fractures.gmsh_physical_tags = {10, 11};
                  Triangulation<2> tria;
-                 read_gmsh(prm, 0, tria);
+                 read_gmsh(prm, 0, MPI_COMM_SELF, tria);
                });
   expect_error("fracture tag not listed",
                "list it in Fractures/Gmsh physical tags",
@@ -96,22 +96,22 @@ main()
                  Parameters prm = parameters(2, "gmsh_01.geo");
                  prm.fractures.gmsh_physical_tags.clear();
                  Triangulation<2> tria;
-                 read_gmsh(prm, 0, tria);
+                 read_gmsh(prm, 0, MPI_COMM_SELF, tria);
                });
   expect_error("not embedded", "Embed the fracture", [] {
     Parameters       prm = parameters(2, "gmsh_03_not_embedded.geo");
     Triangulation<2> tria;
-    read_gmsh(prm, 0, tria);
+    read_gmsh(prm, 0, MPI_COMM_SELF, tria);
   });
   expect_error("wrong dimension", "is 2-dimensional, but Dimension = 3", [] {
     Parameters       prm = parameters(3, "gmsh_01.geo");
     Triangulation<3> tria;
-    read_gmsh(prm, 0, tria);
+    read_gmsh(prm, 0, MPI_COMM_SELF, tria);
   });
   expect_error("missing file", "cannot be opened", [] {
     Parameters       prm = parameters(2, "no_such_mesh.msh");
     Triangulation<2> tria;
-    read_gmsh(prm, 0, tria);
+    read_gmsh(prm, 0, MPI_COMM_SELF, tria);
   });
   expect_error(
     "Segments with gmsh", "cannot be combined with Mesh/Source = gmsh", [] {

@@ -44,6 +44,13 @@ namespace PolyFrac
   }
 
   /**
+   * The number of ranks of @p communicator that share this rank's node
+   * (its memory); 1 without MPI. Collective on @p communicator.
+   */
+  unsigned int
+  n_ranks_on_this_node(const MPI_Comm communicator);
+
+  /**
    * @p pattern: the rows @p owned of this rank (and the same columns) of a
    * matrix to which each rank adds @p entries, its own contributions, some
    * of them in other ranks' rows: those rows are writable here, and the

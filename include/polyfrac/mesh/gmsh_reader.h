@@ -1,6 +1,7 @@
 #ifndef polyfrac_mesh_gmsh_reader_h
 #define polyfrac_mesh_gmsh_reader_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/grid/tria.h>
@@ -58,7 +59,9 @@ namespace PolyFrac
    * Reads (or, for a `.geo`, meshes) `Mesh/File name` with the gmsh C++ API
    * into @p tria and returns its fracture elements.
    *
-   * Steps: `gmsh::open`; `generate(dim)` if the file is a `.geo`;
+   * Steps: `gmsh::open`; `generate(dim)` if the file is a `.geo`; the
+   * memory check of the refined mesh (check_memory(): its cells times
+   * 2^(dim n_refinements), for the ranks of @p communicator on this node);
    * @p n_refinements uniform gmsh refinements (`refine()`, which splits the
    * fracture elements together with the cells, so they stay conforming);
    * extraction:
@@ -73,10 +76,10 @@ namespace PolyFrac
    *   GmshMesh::fracture_elements, one fracture per listed tag.
    *
    * Errors (ExcMessage naming the file): the file cannot be opened or
-   * meshed; its mesh has no dim-dimensional elements or is of another
-   * dimension; a listed fracture tag has no (dim-1)-dimensional elements;
-   * a fracture element is not made of cell vertices (fracture not
-   * embedded in the mesh: `Curve{..} In Surface{..}` /
+   * meshed; the refined mesh would not fit in memory; its mesh has no
+   * dim-dimensional elements or is of another dimension; a listed fracture tag
+   * has no (dim-1)-dimensional elements; a fracture element is not made of cell
+   * vertices (fracture not embedded in the mesh: `Curve{..} In Surface{..}` /
    * `Surface{..} In Volume{..}`); a non-fracture (dim-1) physical group
    * has an element inside the domain; PolyFrac built without the gmsh API.
    *
@@ -89,7 +92,8 @@ namespace PolyFrac
    * @code
    *   Triangulation<2>     tria;
    *   const GmshMesh<2>    gmsh_mesh =
-   *     read_gmsh<2>(prm, prm.mesh.global_refinements + level, tria);
+   *     read_gmsh<2>(prm, prm.mesh.global_refinements + level,
+   *                  MPI_COMM_WORLD, tria);
    *   for (const auto &element : gmsh_mesh.fracture_elements)
    *     ... element.vertices, element.normal ...
    * @endcode
@@ -98,6 +102,7 @@ namespace PolyFrac
   GmshMesh<dim>
   read_gmsh(const Parameters   &prm,
             const unsigned int  n_refinements,
+            const MPI_Comm      communicator,
             Triangulation<dim> &tria);
 
   /**
