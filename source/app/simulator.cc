@@ -544,6 +544,19 @@ namespace PolyFrac
 
 
   template <int dim>
+  const Parameters &
+  Simulator<dim>::parameters_of_level(
+    const LevelDiscretization<dim> &discretization)
+  {
+    level_parameters.push_back(prm);
+    level_parameters.back().solver.method =
+      prm.solver.method_for(dim, discretization.mesh->n_cells());
+    return level_parameters.back();
+  }
+
+
+
+  template <int dim>
   ConvergenceRow
   Simulator<dim>::run_level(const unsigned int level,
                             TimerOutput       &timer,
@@ -566,16 +579,20 @@ namespace PolyFrac
     coarser_discretization.reset();
     timer.leave_subsection();
 
-    out << "Level " << level << std::endl;
+    const Parameters &level_prm = parameters_of_level(discretization);
+    out << "Level " << level << ": "
+        << prm.solver.describe_choice(dim, discretization.mesh->n_cells())
+        << std::endl;
     discretization.print_summary(out);
 
     timer.enter_subsection("assembly");
-    const std::unique_ptr<Model<dim>> model = factory(prm, discretization);
+    const std::unique_ptr<Model<dim>> model =
+      factory(level_prm, discretization);
     timer.leave_subsection();
     if (coarser)
       model->start_from(*coarser);
 
-    LevelOutput                       output(prm,
+    LevelOutput                       output(level_prm,
                        level,
                        discretization.network->n_fracture_faces() > 0,
                        model->is_time_dependent(),

@@ -114,7 +114,9 @@ namespace PolyFrac
                    const unsigned int n_ranks)
   {
     const double one_rank =
-      n_cells * bytes_per_cell[prm.dim - 2][prm.solver.method == "direct"];
+      n_cells *
+      bytes_per_cell[prm.dim - 2]
+                    [prm.solver.method_for(prm.dim, n_cells) == "direct"];
     return one_rank * (replicated_fraction * n_ranks_on_node +
                        (1 - replicated_fraction) * n_ranks_on_node / n_ranks);
   }

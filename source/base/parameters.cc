@@ -909,8 +909,12 @@ namespace PolyFrac
 
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
-                      "direct",
-                      Patterns::Selection("direct|AMG"),
+                      "automatic",
+                      Patterns::Selection("automatic|direct|AMG"),
+                      "automatic: direct for a level of at most 100,000 "
+                      "cells in 2D or 2,000 in 3D, AMG above (measured on "
+                      "elasticity, parameters.h); each level says its "
+                      "choice on its first line. "
                       "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
                       "(smoothed aggregation with the rigid-body modes) for "
                       "elasticity, and for the symmetric condensed contact "
@@ -1428,7 +1432,8 @@ namespace PolyFrac
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
-    solver.method          = prm->get("Method");
+    solver.automatic       = prm->get("Method") == "automatic";
+    solver.method          = solver.automatic ? "direct" : prm->get("Method");
     solver.tolerance       = prm->get_double("Tolerance");
     solver.max_iterations  = prm->get_integer("Maximum iterations");
     solver.smoother_sweeps = prm->get_integer("Smoother sweeps");
@@ -2040,7 +2045,7 @@ namespace PolyFrac
         warn_if_set("Linear solver", "Smoother sweeps");
         warn_if_set("Nonlinear solver", "Forcing term");
       }
-    else if (solver.method == "direct")
+    else if (solver.method == "direct" && !solver.automatic)
       {
         // The AMG's smoother and the condensed steps' Krylov stop.
         const std::string direct = "Linear solver/Method = direct";
@@ -2166,5 +2171,30 @@ namespace PolyFrac
   listed(const std::vector<unsigned int> &ids, const unsigned int id)
   {
     return std::find(ids.begin(), ids.end(), id) != ids.end();
+  }
+  std::string
+  Parameters::SolverData::method_for(const unsigned int dim,
+                                     const double       n_cells) const
+  {
+    if (!automatic)
+      return method;
+    return n_cells <= largest_direct_level[dim - 2] ? "direct" : "AMG";
+  }
+
+
+
+  std::string
+  Parameters::SolverData::describe_choice(const unsigned int dim,
+                                          const double       n_cells) const
+  {
+    std::ostringstream choice;
+    choice << "linear solver " << method_for(dim, n_cells);
+    if (automatic)
+      choice << " (Linear solver/Method = automatic: " << n_cells
+             << " cells, AMG above " << largest_direct_level[dim - 2] << " in "
+             << dim << "D)";
+    else
+      choice << " (Linear solver/Method)";
+    return choice.str();
   }
 } // namespace PolyFrac

@@ -568,7 +568,8 @@ CASES = {
         "`Smoother sweeps = 2` with `Method = direct`: a warning, runs",
         ["Linear solver/Smoother sweeps is not used by Linear solver/Method "
          "= direct and is ignored"],
-        files={"scene.prm": section("Linear solver", Smoother_sweeps="2")},
+        files={"scene.prm": section("Linear solver", Method="direct",
+                                    Smoother_sweeps="2")},
         status=0),
     "adaptive_flow": case(
         "`Mesh/Refinement = adaptive` with `Model = flow`",
@@ -719,13 +720,15 @@ CASES = {
         address_space=10**9),
     "umfpack_out_of_memory": case(
         "`Global refinements = 4` of a gmsh mesh of 944 triangles (241,664 "
-        "cells), run with 1 GB of address space (was UMFPACK's list of "
+        "cells), `Linear solver/Method = direct`, run with 1 GB of address "
+        "space (was UMFPACK's list of "
         "the causes of every error status; where the memory runs out, in "
         "UMFPACK or before, depends on the machine)",
         ["out of memory", "use Linear solver/Method = AMG"],
         files={"scene.prm": section("Mesh", Source="gmsh",
                                     File_name="box.geo",
-                                    Global_refinements="4"),
+                                    Global_refinements="4") +
+               section("Linear solver", Method="direct"),
                "box.geo": FINE_BOX_GEO},
         stage="level", absent=["rank deficient"], address_space=10**9),
     "gmsh_physical_tag_twice": case(

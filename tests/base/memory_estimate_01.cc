@@ -3,7 +3,7 @@
 // the distributed part falls with all the ranks (4 ranks need as much on
 // one node as on two); a mesh that fits on one
 // rank is refused for the ranks that would not fit beside each other, and
-// the message says so.
+// the message says so. The default linear solver is chosen by the size.
 
 #include <polyfrac/base/memory_estimate.h>
 
@@ -18,7 +18,9 @@ int
 main()
 {
   Parameters prm(3);
-  prm.file_name = "scene.prm";
+  prm.file_name        = "scene.prm";
+  prm.solver.automatic = false;
+  prm.solver.method    = "direct";
 
   const double n_cells   = 1e5;
   const double one_rank  = estimated_memory(prm, n_cells, 1, 1);
@@ -34,6 +36,22 @@ main()
   AssertThrow(std::abs(2 * two_nodes - node_of_4) <= 1e-12 * node_of_4,
               ExcMessage("2 nodes of 2 ranks must together need what one "
                          "node of 4 ranks needs"));
+
+  // The default, Linear solver/Method = automatic, solves a 3D level of
+  // more than 2,000 cells by AMG, whose estimate is the smaller.
+  const Parameters automatic(3);
+  AssertThrow(automatic.solver.automatic &&
+                automatic.solver.method_for(3, 2000) == "direct" &&
+                automatic.solver.method_for(3, 2001) == "AMG" &&
+                automatic.solver.method_for(2, 1e5) == "direct" &&
+                automatic.solver.method_for(2, 1e5 + 1) == "AMG",
+              ExcMessage("Method = automatic must be the default and choose "
+                         "AMG above 2,000 cells in 3D and 1e5 in 2D"));
+  AssertThrow(estimated_memory(automatic, n_cells) < one_rank,
+              ExcMessage("AMG must need less memory than UMFPACK"));
+  std::cout << "Method = automatic: AMG above 2000 cells in 3D, "
+            << estimated_memory(automatic, n_cells) / 1e9 << " GB for 1e5 cells"
+            << std::endl;
 
   // A mesh of 0.8 of the machine's memory on one rank: refused on 4.
   const double have = physical_memory();

@@ -11,6 +11,7 @@
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 
+#include <deque>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -127,8 +128,19 @@ namespace PolyFrac
     void
     check_distributable() const;
 
-    const Parameters  &prm;
-    const ModelFactory factory;
+    /**
+     * The parameters of @p discretization's level: #prm with the linear
+     * solver of its size (Parameters::SolverData::method_for()), kept in
+     * #level_parameters for as long as the run.
+     */
+    const Parameters &
+    parameters_of_level(const LevelDiscretization<dim> &discretization);
+
+    const Parameters &prm;
+    /** The parameters of each level run (parameters_of_level()): its
+     * model and what it hands over to the next level refer to them. */
+    std::deque<Parameters> level_parameters;
+    const ModelFactory     factory;
     /** The ranks that share the run. */
     const MPI_Comm              communicator;
     std::vector<ConvergenceRow> rows;
