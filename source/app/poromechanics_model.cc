@@ -938,13 +938,16 @@ namespace PolyFrac
   {
     const std::vector<double> p      = flow.cell_pressures(pressure);
     const std::vector<double> volume = volume_changes(state);
-    std::vector<double>       porosity(p.size());
+    std::vector<double>       porosity(p.size()), biot_pressure(p.size());
     for (unsigned int c = 0; c < p.size(); ++c)
-      porosity[c] =
-        prm.flow.initial_porosity +
-        prm.flow.biot_coefficient * (volume[c] - initial_volume[c]) /
-          discretization.geometry->cells[c].measure +
-        (p[c] - initial_cell_pressure[c]) * prm.flow.inverse_biot_modulus;
+      {
+        porosity[c] =
+          prm.flow.initial_porosity +
+          prm.flow.biot_coefficient * (volume[c] - initial_volume[c]) /
+            discretization.geometry->cells[c].measure +
+          (p[c] - initial_cell_pressure[c]) * prm.flow.inverse_biot_modulus;
+        biot_pressure[c] = prm.flow.biot_coefficient * p[c];
+      }
     return matrix_patches<dim>(
       *discretization.geometry,
       *discretization.network,
@@ -953,7 +956,8 @@ namespace PolyFrac
       &state,
       {{"pressure", p},
        {"porosity", porosity},
-       vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))});
+       vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))},
+      biot_pressure);
   }
 
 

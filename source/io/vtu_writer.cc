@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/utilities.h>
 
 #include <polyfrac/base/checked_file.h>
@@ -160,14 +161,16 @@ namespace PolyFrac
                  const DoFMap<dim>                &dofs,
                  const Elasticity<dim> *const      elasticity,
                  const MechanicalState<dim> *const state,
-                 const std::vector<OutputField>   &cell_fields)
+                 const std::vector<OutputField>   &cell_fields,
+                 const std::vector<double>        &biot_pressure)
   {
     using namespace DataComponentInterpretation;
     const bool         mechanics = elasticity != nullptr && state != nullptr;
     std::vector<Field> fields;
     if (mechanics)
       fields = {{"displacement", dim, component_is_part_of_vector},
-                {"stress", dim * dim, component_is_part_of_tensor}};
+                {"stress", dim * dim, component_is_part_of_tensor},
+                {"total_stress", dim * dim, component_is_part_of_tensor}};
     fields.push_back({"polytope", 1, component_is_scalar});
     for (const OutputField &field : cell_fields)
       fields.push_back({field.name,
@@ -202,9 +205,15 @@ namespace PolyFrac
                 values = state->local_values(dofs, K);
                 const Tensor<2, dim> sigma =
                   elasticity->stress(local->gradient(values));
-                for (unsigned int c = 0; c < dim * dim; ++c)
-                  cell_values.push_back(
-                    sigma[Tensor<2, dim>::unrolled_to_component_indices(c)]);
+                const Tensor<2, dim> total =
+                  sigma +
+                  elasticity->initial_stress_value(geometry.cells[K].centroid) -
+                  (biot_pressure.empty() ? 0. : biot_pressure[K]) *
+                    Tensor<2, dim>(unit_symmetric_tensor<dim>());
+                for (const Tensor<2, dim> &tensor : {sigma, total})
+                  for (unsigned int c = 0; c < dim * dim; ++c)
+                    cell_values.push_back(
+                      tensor[Tensor<2, dim>::unrolled_to_component_indices(c)]);
               }
             cell_values.push_back(K);
             for (const OutputField &field : cell_fields)
@@ -488,7 +497,8 @@ namespace PolyFrac
                  const DoFMap<2> &,
                  const Elasticity<2> *const,
                  const MechanicalState<2> *const,
-                 const std::vector<OutputField> &);
+                 const std::vector<OutputField> &,
+                 const std::vector<double> &);
   template PatchData<1, 2>
   fracture_patches(const MeshGeometry<2> &,
                    const FractureNetwork<2> &,
@@ -501,7 +511,8 @@ namespace PolyFrac
                  const DoFMap<3> &,
                  const Elasticity<3> *const,
                  const MechanicalState<3> *const,
-                 const std::vector<OutputField> &);
+                 const std::vector<OutputField> &,
+                 const std::vector<double> &);
   template PatchData<2, 3>
   fracture_patches(const MeshGeometry<3> &,
                    const FractureNetwork<3> &,

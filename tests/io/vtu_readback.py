@@ -10,7 +10,8 @@ solution is piecewise affine and reproduced to round-off, and checks:
   their geometry: every cell has a positive measure and the cells tile the
   domain (matrix) or the fracture;
 - the values against the exact fields: the displacement at every vertex
-  (the side of the fracture taken from the cell), the stress, the polytope
+  (the side of the fracture taken from the cell), the stress and the total
+  stress (no in-situ stress, no pore pressure: the same), the polytope
   count, and on the fractures n^+, the jump, the traction, their normal and
   tangential parts and the contact states (contact, slip);
 - a second run writes the same VTU and PVD bytes, and VTU compression = none gives the
@@ -41,7 +42,7 @@ except ImportError as error:
 # (1e-14) and of Float32 and catches any wrong value.
 TOLERANCE = 1e-6
 
-MATRIX_FIELDS = {"displacement", "stress", "polytope"}
+MATRIX_FIELDS = {"displacement", "stress", "total_stress", "polytope"}
 FRACTURE_FIELDS = {"fracture", "n_plus", "jump", "normal_jump",
                    "tangential_jump", "traction", "normal_traction",
                    "tangential_traction", "normal_state", "tangential_state"}
@@ -185,6 +186,10 @@ def check_matrix(mesh, scene, n_polytopes):
                     "displacement")
     check_close(mesh.point_data["stress"],
                 np.tile(padded.flatten(), (len(mesh.points), 1)), "stress")
+    # No in-situ stress and no pore pressure: the total stress is sigma.
+    check_close(mesh.point_data["total_stress"],
+                np.tile(padded.flatten(), (len(mesh.points), 1)),
+                "total_stress")
     polytopes = mesh.point_data["polytope"]
     check(len(np.unique(polytopes)) == n_polytopes,
           f"{len(np.unique(polytopes))} polytope indices, {n_polytopes} "

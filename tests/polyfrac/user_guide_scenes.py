@@ -11,7 +11,9 @@
   move (largest |u| of the last VTU below 1e-12 m); with an initial
   pressure p_0 = 1 MPa it stays at rest with the traction (sigma_0 -
   b p_0 I) n, and moves (|u| > 1e-4 m) with sigma_0 n alone, as the guide
-  warns.
+  warns. Its `total_stress` is sigma_0 - b p_0 I in every cell, and in the
+  injection `total_stress` = `stress` + sigma_0 - b `pressure` I in every
+  cell (sigma_0 = diag(-s_h, -s_v), b = 0.8, the scene's values).
 - prm/user-guide-3d.prm (gmsh, OpenCASCADE, one fracture; 3 steps): faces
   open and faces slip at the end, the injected volume is q times the area
   of the faces whose centroid is within 2 m of the origin (from the
@@ -57,10 +59,29 @@ def series(directory):
         return list(csv.DictReader(table))
 
 
+def solution(directory, step):
+    return meshio.read(os.path.join(directory,
+                                    "solution-level-0-%04d.vtu" % step))
+
+
 def largest_displacement(directory, step):
-    vtu = meshio.read(os.path.join(directory,
-                                   "solution-level-0-%04d.vtu" % step))
+    vtu = solution(directory, step)
     return np.abs(np.asarray(vtu.point_data["displacement"])).max()
+
+
+SIGMA_0 = np.diag([-2e6, -4e6, 0.])  # -s_h, -s_v, padded to 3 x 3
+BIOT = 0.8
+
+
+def check_total_stress(name, vtu, expected):
+    """total_stress of every point of vtu against expected (n x 9), to the
+    Float32 rounding of stresses of some MPa."""
+    total = np.asarray(vtu.point_data["total_stress"])
+    error = np.abs(total - expected).max()
+    if not error <= 1e-6 * np.abs(expected).max():
+        sys.exit(f"{name}: total_stress differs from the expected one by "
+                 f"{error} Pa")
+    print(f"{name}: total_stress as expected to {error} Pa")
 
 
 # The 2D scene as shipped.
@@ -71,6 +92,11 @@ if int(rows[-1]["n_open"]) == 0:
 if max(int(row["n_slip"]) for row in rows) == 0:
     sys.exit("2D: no face slips in any step")
 close("2D, injected volume", injected("2D", output), Q * 2 * 10)
+vtu = solution(directory, 10)
+pressure = np.asarray(vtu.point_data["pressure"]).reshape(-1, 1, 1)
+expected = (np.asarray(vtu.point_data["stress"]).reshape(-1, 3, 3) +
+            SIGMA_0 - BIOT * pressure * np.diag([1., 1., 0.]))
+check_total_stress("2D injection", vtu, expected.reshape(-1, 9))
 
 # At rest: no source, 2 steps.
 rest = ["Flow/Fracture source=0", "Time/End time=2"]
@@ -88,6 +114,10 @@ u = largest_displacement(directory, 2)
 if not u < 1e-12:
     sys.exit(f"2D at rest with p_0: the block moves ({u} m)")
 print(f"2D at rest under (sigma_0 - b p_0 I) n: largest |u| {u} m")
+vtu = solution(directory, 2)
+at_rest = SIGMA_0 - BIOT * 1e6 * np.diag([1., 1., 0.])
+check_total_stress("2D at rest with p_0", vtu,
+                   np.tile(at_rest.flatten(), (len(vtu.points), 1)))
 directory, _ = run("2d-p0-wrong", "user-guide-2d.prm", *rest, *p0)
 u = largest_displacement(directory, 2)
 if not u > 1e-4:

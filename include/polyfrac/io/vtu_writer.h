@@ -82,10 +82,13 @@ namespace PolyFrac
    * vertices and the displacement, a node-side field, shows its jump
    * across the fractures. A vertex of the fine cell that is a vertex of
    * its polytope K gets the node-side value u_{Ks}; any other (inside an
-   * agglomerate) gets Π^K u. `stress` (σ_K, a tensor), `polytope` (the
+   * agglomerate) gets Π^K u. `stress` (σ_K = σ(∇^K u), the effective
+   * stress of the displacement, a tensor), `total_stress` (σ_K + σ0(x̄_K)
+   * − b p_K I: with the in-situ stress and, given @p biot_pressure, the
+   * values b p_K, the pore pressure; doc/scheme.md §1), `polytope` (the
    * index of K) and the @p cell_fields are constant over the patch.
    * Without @p elasticity and @p state (a model without mechanics) the
-   * displacement and the stress are left out. On more than one rank, the
+   * displacement and the stresses are left out. On more than one rank, the
    * patches of this rank's polytopes (@p dofs).
    */
   template <int dim>
@@ -95,7 +98,8 @@ namespace PolyFrac
                  const DoFMap<dim>                &dofs,
                  const Elasticity<dim> *const      elasticity,
                  const MechanicalState<dim> *const state,
-                 const std::vector<OutputField>   &cell_fields = {});
+                 const std::vector<OutputField>   &cell_fields   = {},
+                 const std::vector<double>        &biot_pressure = {});
 
   /**
    * The fracture output: patches of dimension dim-1, one per fracture face

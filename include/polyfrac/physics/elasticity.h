@@ -105,6 +105,12 @@ namespace PolyFrac
     Tensor<2, dim>
     stress(const Tensor<2, dim> &gradient) const;
 
+    /** σ0(@p x) of Initial stress/Stress (or of @p stress, a thread's own
+     * copy); throws naming the point if it is not symmetric. */
+    Tensor<2, dim>
+    initial_stress_value(const Point<dim>    &x,
+                         const Function<dim> *stress = nullptr) const;
+
     /**
      * The residual error indicator η_K of @p state on each polytope K
      * (doc/scheme.md §9), with σ_K the stress of the cell gradient ∇^K u,
@@ -282,12 +288,6 @@ namespace PolyFrac
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;
     const DoFMap<dim>          &dofs;
-
-    /** σ0(@p x) of Initial stress/Stress (or of @p stress, a thread's own
-     * copy); throws naming the point if it is not symmetric. */
-    Tensor<2, dim>
-    initial_stress_value(const Point<dim>    &x,
-                         const Function<dim> *stress = nullptr) const;
 
     std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
       fracture_pressure, traction, initial_stress;
