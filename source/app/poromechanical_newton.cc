@@ -83,13 +83,12 @@ namespace PolyFrac
     AssertThrow(bubbles == nullptr || !dofs.is_distributed(),
                 ExcInternalError()); // BiotSystem refuses them
     make_pattern();
-    // The rows of the factorised Jacobian that this rank owns: an equal
-    // share of each, in order (MUMPS distributes them its own way).
-    const unsigned int n_ranks = n_mpi_ranks(communicator());
-    const unsigned int rank    = this_mpi_rank(communicator());
-    owned_rows.set_size(n_dofs());
-    owned_rows.add_range(n_dofs() * rank / n_ranks,
-                         n_dofs() * (rank + 1) / n_ranks);
+    // Every rank factorises the whole summed Jacobian by itself: MUMPS on
+    // several processes is not reproducible from run to run (its dynamic
+    // scheduling: two runs of the slip scene on 2 ranks took 3 and 4
+    // Newton iterations in the same step), and a resumed run must end
+    // with the bits of an uninterrupted one.
+    all_rows = complete_index_set(n_dofs());
     // The cell pressures whose couplings this rank adds (its cells').
     own_cell_pressure.assign(n_p, false);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
@@ -432,7 +431,7 @@ namespace PolyFrac
     fallback.reset();
     factorised_jacobian.clear();
     factorised_jacobian.reinit(
-      owned_rows, owned_rows, jacobian, communicator(), 0., true, &sparsity);
+      all_rows, all_rows, jacobian, MPI_COMM_SELF, 0., true, &sparsity);
     direct = std::make_unique<TrilinosWrappers::SolverDirect>(
       direct_control,
       TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
@@ -499,8 +498,8 @@ namespace PolyFrac
     rhs.scale(scaling);
     Vector<double> dx(n_dofs());
     if (direct)
-      dx = solve_on_owned_rows(owned_rows,
-                               communicator(),
+      dx = solve_on_owned_rows(all_rows,
+                               MPI_COMM_SELF,
                                rhs,
                                [&](auto &x, const auto &b) {
                                  direct->solve(x, b);

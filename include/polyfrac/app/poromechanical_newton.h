@@ -64,10 +64,12 @@ namespace PolyFrac
    * where the full step would make the residual larger (line_search()). On
    * several ranks (without face bubbles, which are not distributed) every rank
    * adds its part of the Jacobian (its cells, fracture faces and rows of A) to
-   * the whole matrix, the parts are summed over the ranks, and MUMPS factorises
-   * the sum with an equal share of the rows on each rank; residuals and
-   * iterates are whole on every rank, so that all ranks take the same
-   * decisions.
+   * the whole matrix, the parts are summed over the ranks, and every rank
+   * factorises the sum by itself (MUMPS on several processes is not
+   * reproducible from run to run, and a resumed run must give the bits of
+   * an uninterrupted one; the factorisation does not gain from the ranks
+   * yet); residuals and iterates are whole on every rank, so that all ranks
+   * take the same decisions.
    */
   template <int dim>
   class PoromechanicalNewton
@@ -255,8 +257,9 @@ namespace PolyFrac
     SparseMatrix<double> flow_matrix;
     /** The prescribed pressures of the step (offset to x). */
     AffineConstraints<double> pressure_constraints;
-    /** The rows of the factorised Jacobian this rank owns. */
-    IndexSet owned_rows;
+    /** All rows: every rank factorises the whole Jacobian (MPI_COMM_SELF),
+     * so that a run is reproducible on several ranks. */
+    IndexSet all_rows;
     /** Whether this rank adds the couplings of a cell pressure (its
      * cell's), by pressure dof. */
     std::vector<bool> own_cell_pressure;
