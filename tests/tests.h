@@ -17,6 +17,10 @@ namespace PolyFrac::Testing
   {
     Parameters prm(dim);
     prm.mesh.subdivisions.assign(dim, subdivisions);
+    // The unit tests' manufactured data are for lambda = mu = 1 (the
+    // Material defaults are SI: 10 GPa).
+    prm.lame_lambda = 1;
+    prm.lame_mu     = 1;
     return prm;
   }
 

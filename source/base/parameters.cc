@@ -538,15 +538,20 @@ namespace PolyFrac
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
+    // SI units, as everywhere: a sandstone by default (E = 25 GPa,
+    // nu = 0.25).
     prm.declare_entry("Lame lambda",
-                      "1",
+                      "1e10",
                       Patterns::Double(),
-                      "First Lame coefficient; any lambda > -2 mu/d is "
-                      "admissible (the elastic energy stays positive).");
+                      "First Lame coefficient in Pa (default 10 GPa: with "
+                      "the default Lame mu, a sandstone of Young's modulus "
+                      "25 GPa and Poisson's ratio 0.25); any lambda > "
+                      "-2 mu/d is admissible (the elastic energy stays "
+                      "positive).");
     prm.declare_entry("Lame mu",
-                      "1",
+                      "1e10",
                       Patterns::Double(),
-                      "Shear modulus, > 0.");
+                      "Shear modulus in Pa, > 0 (default 10 GPa).");
     prm.leave_subsection();
 
     prm.enter_subsection("Body force");

@@ -533,7 +533,8 @@ CASES = {
             "Contact", Friction_law="Tresca", Bubbles="true") + section(
             "Boundary conditions", Dirichlet_boundary_ids="0",
             Neumann_boundary_ids="1, 2, 3") + section(
-            "Body force", Function_expression="1; 1")},
+            "Body force", Function_expression="1; 1") + section(
+            "Material", Lame_lambda="1", Lame_mu="1")},
         stage="level", absent=["Use Bubbles = true", "set Bubbles = true"]),
     "output_directory_unwritable": case(
         "`Output directory = blocker/out` where blocker is a file",
