@@ -904,7 +904,14 @@ namespace PolyFrac
                               "open/stick/slip counts; try more load steps, "
                               "a different Contact/Complementarity "
                               "parameter or a larger Nonlinear "
-                              "solver/Maximum iterations."));
+                              "solver/Maximum iterations. If the momentum "
+                              "residual grows from iteration to iteration, "
+                              "a part of the domain may be free to move: a "
+                              "block cut off by the fractures without "
+                              "Dirichlet boundary, held by none of its "
+                              "faces once they open or slip; give it one "
+                              "(Boundary conditions/Dirichlet boundary "
+                              "ids)."));
                 out << "  Newton did not converge: cutting the load step"
                     << std::endl;
               }

@@ -536,6 +536,20 @@ CASES = {
             "Body force", Function_expression="1; 1") + section(
             "Material", Lame_lambda="1", Lame_mu="1")},
         stage="level", absent=["Use Bubbles = true", "set Bubbles = true"]),
+    "block_free_to_move_stiff_rock": case(
+        "the block of `singular_jacobian_with_bubbles` with the SI defaults "
+        "of `Material` (10 GPa): the momentum residual grows to 1e3 of the "
+        "load, too little to be detected as singular (was \"try more load "
+        "steps\" only)",
+        ["The contact solver did not converge", "a part of the domain may "
+         "be free to move", "Boundary conditions/Dirichlet boundary ids"],
+        files={"scene.prm": CONTACT + section(
+            "Fractures", Segments="0, -1 : 0, 1") + section(
+            "Contact", Friction_law="Tresca", Bubbles="true") + section(
+            "Boundary conditions", Dirichlet_boundary_ids="0",
+            Neumann_boundary_ids="1, 2, 3") + section(
+            "Body force", Function_expression="1; 1")},
+        stage="level"),
     "output_directory_unwritable": case(
         "`Output directory = blocker/out` where blocker is a file",
         ["cannot create the output directory <blocker/out> (Not a directory)",
