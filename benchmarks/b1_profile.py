@@ -30,9 +30,9 @@ def read(directory, level):
     order = np.argsort(xi)
     length = np.linalg.norm(points[1::2] - points[0::2], axis=1)
     data = dict(xi=xi, length=length,
-                lambda_n=mesh.point_data["normal_traction"][0::2],
-                slip=-(mesh.point_data["jump"][0::2, :2] @ t),
-                state=mesh.point_data["normal_state"][0::2])
+                lambda_n=np.concatenate(mesh.cell_data["normal_traction"]),
+                slip=-(np.concatenate(mesh.cell_data["jump"])[:, :2] @ t),
+                state=np.concatenate(mesh.cell_data["normal_state"]))
     return {key: value[order] for key, value in data.items()}
 
 

@@ -39,14 +39,11 @@ files = sorted(glob.glob(f"{out}/solution-level-0-*.vtu"))
 mobility = 9.87e-14 / 1e-3
 for n, name in enumerate(files):
     mesh = meshio.read(name)
-    # Patch data are point data, constant over each deal.II cell: the cell
-    # whose centroid is nearest to the centre (0, 0) of the slab.
-    centroids, values = [], []
-    for block in mesh.cells:
-        centroids.append(mesh.points[block.data][:, :, :2].mean(axis=1))
-        values.append(mesh.point_data["pressure"][block.data].mean(axis=1))
-    centroids = np.concatenate(centroids)
-    values = np.concatenate(values)
+    # The pressure is cell data, one value per deal.II cell: the cell whose
+    # centroid is nearest to the centre (0, 0) of the slab.
+    centroids = np.concatenate([mesh.points[block.data][:, :, :2].mean(axis=1)
+                                for block in mesh.cells])
+    values = np.concatenate(mesh.cell_data["pressure"])
     k = np.argmin(np.linalg.norm(centroids, axis=1))
     t = n * time_step
     times.append(t)

@@ -67,25 +67,26 @@ def variants():
 
 def quantities(output):
     """The slip moment and the normal force of the last fracture output in
-    `output` (its last level, its last step): per face (polygons whose
-    vertices carry the face's constant values), its area times
+    `output` (its last level, its last step): per face (a polygon, its
+    values cell data), its area times
     |[[u]]_tau| and times lambda_n."""
     import meshio
     files = glob.glob(os.path.join(output, "fractures-level-*-*.vtu"))
     last = max(files, key=lambda name: tuple(
         int(part) for part in name[:-4].split("-")[-2:]))
     mesh = meshio.read(last)
-    slip = numpy.linalg.norm(mesh.point_data["tangential_jump"], axis=1)
-    normal = mesh.point_data["normal_traction"].ravel()
+    slip = numpy.linalg.norm(
+        numpy.concatenate(mesh.cell_data["tangential_jump"]), axis=1)
+    normal = numpy.concatenate(mesh.cell_data["normal_traction"]).ravel()
     moment = force = 0.
-    for block in mesh.cells:
-        for face in block.data:
-            points = mesh.points[face]
-            area = 0.5 * numpy.linalg.norm(sum(
-                numpy.cross(points[k], points[(k + 1) % len(face)])
-                for k in range(len(face))))
-            moment += area * slip[face[0]]
-            force += area * normal[face[0]]
+    faces = [face for block in mesh.cells for face in block.data]
+    for i, face in enumerate(faces):
+        points = mesh.points[face]
+        area = 0.5 * numpy.linalg.norm(sum(
+            numpy.cross(points[k], points[(k + 1) % len(face)])
+            for k in range(len(face))))
+        moment += area * slip[i]
+        force += area * normal[i]
     return moment, force
 
 

@@ -45,28 +45,31 @@ def vtu_file(path):
 def read_faces(path):
     """Triangles (or polygons) of the fracture faces with their opening and
     slip in mm, the states and the fracture pressure in MPa (if written),
-    one value per cell (the patch constants)."""
+    one value per cell (the cell data; the fracture index, point data)."""
     mesh = meshio.read(vtu_file(path))
     polygons, opening, slip, states, fracture = [], [], [], [], []
-    pressure_field = mesh.point_data.get("fracture_pressure")
+
+    def cell_data(name):
+        return (np.concatenate(mesh.cell_data[name])
+                if name in mesh.cell_data else None)
+    pressure_field = cell_data("fracture_pressure")
     pressure = []
     fracture_index = mesh.point_data["fracture"].reshape(-1)
-    normal_jump = mesh.point_data["normal_jump"].reshape(-1)
-    tangential_jump = mesh.point_data["tangential_jump"].reshape(-1, 3)
-    normal_state = mesh.point_data.get("normal_state")
-    tangential_state = mesh.point_data.get("tangential_state")
-    for block in mesh.cells:
-        for cell in block.data:
-            polygons.append(mesh.points[cell])
-            first = cell[0]
-            opening.append(-1e3 * normal_jump[first])
-            slip.append(1e3 * np.linalg.norm(tangential_jump[first]))
-            fracture.append(int(round(float(fracture_index[first]))))
-            if pressure_field is not None:
-                pressure.append(1e-6 * float(pressure_field[first]))
-            if normal_state is not None:
-                states.append((int(round(float(normal_state[first]))),
-                               int(round(float(tangential_state[first])))))
+    normal_jump = cell_data("normal_jump").reshape(-1)
+    tangential_jump = cell_data("tangential_jump").reshape(-1, 3)
+    normal_state = cell_data("normal_state")
+    tangential_state = cell_data("tangential_state")
+    cells = [cell for block in mesh.cells for cell in block.data]
+    for k, cell in enumerate(cells):
+        polygons.append(mesh.points[cell])
+        opening.append(-1e3 * normal_jump[k])
+        slip.append(1e3 * np.linalg.norm(tangential_jump[k]))
+        fracture.append(int(round(float(fracture_index[cell[0]]))))
+        if pressure_field is not None:
+            pressure.append(1e-6 * float(pressure_field[k]))
+        if normal_state is not None:
+            states.append((int(round(float(normal_state[k]))),
+                           int(round(float(tangential_state[k])))))
     return (np.array(polygons), np.array(opening), np.array(slip), states,
             np.array(fracture), np.array(pressure))
 

@@ -156,11 +156,9 @@ class Mandel:
 
 
 def cell_pressures(vtu):
-    """The cell pressures of a PolyFrac VTU (patch point data, constant over
-    each deal.II cell)."""
-    mesh = meshio.read(vtu)
-    return np.concatenate([mesh.point_data["pressure"][block.data].mean(axis=1)
-                           for block in mesh.cells])
+    """The cell pressures of a PolyFrac VTU (cell data, one value per
+    deal.II cell)."""
+    return np.concatenate(meshio.read(vtu).cell_data["pressure"])
 
 
 def run(program, problem, cell_type, size, scheme, f, out):

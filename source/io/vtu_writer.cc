@@ -6,7 +6,11 @@
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/io/vtu_writer.h>
 
+#include <zlib.h>
+
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -150,6 +154,79 @@ namespace PolyFrac
         sorted.push_back(std::move(patches[i]));
       patches.swap(sorted);
     }
+
+    /**
+     * Moves the data components of @p data from @p first on, constant over
+     * each patch, to its cell data (the value at a patch's first vertex):
+     * each vector or tensor of PatchData::ranges and each other component
+     * becomes one PatchData::CellArray, in the order of the components.
+     */
+    template <int dim, int spacedim>
+    void
+    move_to_cell_data(PatchData<dim, spacedim> &data, const unsigned int first)
+    {
+      using namespace DataComponentInterpretation;
+      // [begin, end) of each field from first on, its name and kind.
+      std::map<
+        unsigned int,
+        std::tuple<unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+                        fields;
+      std::vector<bool> in_field(data.names.size(), false);
+      for (const auto &[begin, last, name, kind] : data.ranges)
+        if (begin >= first)
+          {
+            fields[begin] = {last + 1, name, kind};
+            std::fill(in_field.begin() + begin,
+                      in_field.begin() + last + 1,
+                      true);
+          }
+      for (unsigned int c = first; c < data.names.size(); ++c)
+        if (!in_field[c])
+          fields[c] = {c + 1, data.names[c], component_is_scalar};
+
+      for (const auto &[begin, field] : fields)
+        {
+          const auto &[end, name, kind] = field;
+          const unsigned int n          = kind == component_is_scalar ? 1 :
+                                          kind == component_is_part_of_tensor ? 9 :
+                                                                                3;
+          typename PatchData<dim, spacedim>::CellArray array{name, n, {}};
+          array.values.reserve(n * data.patches.size());
+          for (const auto &patch : data.patches)
+            for (unsigned int slot = 0; slot < n; ++slot)
+              {
+                // A tensor's slot (i, j) of the 3 x 3 array is component
+                // i spacedim + j (Tensor's unrolled order).
+                const unsigned int i = slot / 3, j = slot % 3;
+                const bool present = kind == component_is_part_of_tensor ?
+                                       i < spacedim && j < spacedim :
+                                       slot < end - begin;
+                const unsigned int c =
+                  kind == component_is_part_of_tensor ? i * spacedim + j : slot;
+                array.values.push_back(present ? patch.data(begin + c, 0) :
+                                                 0.f);
+              }
+          data.cell_arrays.push_back(std::move(array));
+        }
+
+      for (auto &patch : data.patches)
+        {
+          Table<2, float> kept(first, patch.data.n_cols());
+          for (unsigned int c = 0; c < first; ++c)
+            for (unsigned int v = 0; v < patch.data.n_cols(); ++v)
+              kept(c, v) = patch.data(c, v);
+          patch.data.swap(kept);
+        }
+      data.names.resize(first);
+      data.ranges.erase(std::remove_if(data.ranges.begin(),
+                                       data.ranges.end(),
+                                       [first](const auto &range) {
+                                         return std::get<0>(range) >= first;
+                                       }),
+                        data.ranges.end());
+    }
   } // namespace
 
 
@@ -168,10 +245,11 @@ namespace PolyFrac
     const bool         mechanics = elasticity != nullptr && state != nullptr;
     std::vector<Field> fields;
     if (mechanics)
-      fields = {{"displacement", dim, component_is_part_of_vector},
-                {"stress", dim * dim, component_is_part_of_tensor},
-                {"total_stress", dim * dim, component_is_part_of_tensor}};
+      fields = {{"displacement", dim, component_is_part_of_vector}};
     fields.push_back({"polytope", 1, component_is_scalar});
+    if (mechanics)
+      for (const std::string name : {"stress", "total_stress"})
+        fields.push_back({name, dim * dim, component_is_part_of_tensor});
     for (const OutputField &field : cell_fields)
       fields.push_back({field.name,
                         field.n_components,
@@ -195,7 +273,7 @@ namespace PolyFrac
           continue;
         if (K != cached)
           {
-            cell_values.clear();
+            cell_values = {static_cast<double>(K)};
             if (mechanics)
               {
                 local  = std::make_unique<LocalReconstruction<dim>>(geometry,
@@ -215,7 +293,6 @@ namespace PolyFrac
                     cell_values.push_back(
                       tensor[Tensor<2, dim>::unrolled_to_component_indices(c)]);
               }
-            cell_values.push_back(K);
             for (const OutputField &field : cell_fields)
               for (unsigned int c = 0; c < field.n_components; ++c)
                 cell_values.push_back(field.values[K * field.n_components + c]);
@@ -241,6 +318,8 @@ namespace PolyFrac
         data.patches.push_back(std::move(patch));
       }
     sort_along_hilbert_curve(data.patches);
+    // `polytope` stays point data, as `fracture` does in fracture_patches().
+    move_to_cell_data(data, first_constant + 1);
     return data;
   }
 
@@ -318,6 +397,9 @@ namespace PolyFrac
             }
         }
     sort_along_hilbert_curve(data.patches);
+    // `fracture` stays point data: DataOutBase (9.4) counts the points of
+    // a triangle patch by the columns of its data, none without a row.
+    move_to_cell_data(data, 1);
     return data;
   }
 
@@ -335,6 +417,148 @@ namespace PolyFrac
       const std::size_t end   = record.find("-->\n");
       if (begin != std::string::npos && end != std::string::npos)
         record.erase(begin, end + 4 - begin);
+      return record;
+    }
+
+    /** zlib's level for @p level, as DataOutBase chooses it. */
+    int
+    zlib_level(const DataOutBase::VtkFlags::ZlibCompressionLevel level)
+    {
+      switch (level)
+        {
+          case DataOutBase::VtkFlags::no_compression:
+            return Z_NO_COMPRESSION;
+          case DataOutBase::VtkFlags::best_speed:
+            return Z_BEST_SPEED;
+          case DataOutBase::VtkFlags::best_compression:
+            return Z_BEST_COMPRESSION;
+          default:
+            return Z_DEFAULT_COMPRESSION;
+        }
+    }
+
+    /**
+     * @p values as the text of a binary VTU data array of a file with
+     * compressor="vtkZLibDataCompressor", as DataOutBase writes its own:
+     * the base64 header (1 block, its raw size twice, its compressed size;
+     * UInt32) and the base64 zlib block.
+     */
+    std::string
+    compressed_base64(const std::vector<float>                         &values,
+                      const DataOutBase::VtkFlags::ZlibCompressionLevel level)
+    {
+      const uLong                raw  = values.size() * sizeof(float);
+      uLongf                     size = compressBound(raw);
+      std::vector<unsigned char> block(size);
+      AssertThrow(compress2(block.data(),
+                            &size,
+                            reinterpret_cast<const Bytef *>(values.data()),
+                            raw,
+                            zlib_level(level)) == Z_OK,
+                  ExcMessage("zlib could not compress a VTU data array."));
+      block.resize(size);
+      const std::uint32_t header[4] = {1,
+                                       static_cast<std::uint32_t>(raw),
+                                       static_cast<std::uint32_t>(raw),
+                                       static_cast<std::uint32_t>(size)};
+      const auto *const bytes = reinterpret_cast<const unsigned char *>(header);
+      return Utilities::encode_base64({bytes, bytes + sizeof(header)}) +
+             Utilities::encode_base64(block);
+    }
+
+    /** The NumberOfComponents attribute of a data array of @p n
+     * components, none for a scalar (as DataOutBase writes them). */
+    std::string
+    number_of_components(const unsigned int n)
+    {
+      return n == 1 ? "" : " NumberOfComponents=\"" + std::to_string(n) + "\"";
+    }
+
+    /** The `<CellData>` element of the cell arrays of @p data. */
+    template <int dim, int spacedim>
+    std::string
+    cell_data_element(const PatchData<dim, spacedim> &data,
+                      const DataOutBase::VtkFlags    &flags)
+    {
+      std::ostringstream element;
+      element << "  <CellData>\n";
+      for (const auto &array : data.cell_arrays)
+        element << "    <DataArray type=\"Float32\" Name=\"" << array.name
+                << "\"" << number_of_components(array.n_components)
+                << " format=\"binary\">\n"
+                << compressed_base64(array.values, flags.compression_level)
+                << "\n    </DataArray>\n";
+      element << "  </CellData>\n";
+      return element.str();
+    }
+
+    /**
+     * Writes the VTU file of @p data to @p out: DataOutBase's header,
+     * points, cells and point data, then the cell data, inserted before
+     * the end of the piece.
+     */
+    template <int dim, int spacedim>
+    void
+    write_vtu_with_cell_data(const PatchData<dim, spacedim> &data,
+                             const DataOutBase::VtkFlags    &flags,
+                             std::ostream                   &out)
+    {
+      std::ostringstream piece;
+      DataOutBase::write_vtu_main(
+        data.patches, data.names, data.ranges, flags, piece);
+      std::string       text = piece.str();
+      const std::size_t end  = text.rfind("</Piece>");
+      AssertThrow(end != std::string::npos, ExcInternalError());
+      text.insert(text.rfind('\n', end) + 1, cell_data_element(data, flags));
+      DataOutBase::write_vtu_header(out, flags);
+      out << text;
+      DataOutBase::write_vtu_footer(out);
+    }
+
+    /**
+     * Throws, naming the field and @p file, if a value of @p data is not a
+     * finite Float32 (inf, NaN, or beyond 3.4e38 once rounded to float):
+     * nothing that is not a number is written as a result.
+     */
+    template <int dim, int spacedim>
+    void
+    check_finite(const PatchData<dim, spacedim> &data, const std::string &file)
+    {
+      const auto fail = [&file](const std::string &field) {
+        AssertThrow(false,
+                    ExcMessage("The field <" + field + "> of <" + file +
+                               "> has values that are not finite in Float32 "
+                               "(inf or NaN, or beyond 3.4e38): a load, "
+                               "source or coefficient of the scene is too "
+                               "large, or the solve diverged. Nothing of "
+                               "this step is written."));
+      };
+      for (const auto &patch : data.patches)
+        for (unsigned int c = 0; c < patch.data.n_rows(); ++c)
+          for (unsigned int v = 0; v < patch.data.n_cols(); ++v)
+            if (!std::isfinite(patch.data(c, v)))
+              fail(data.names[c]);
+      for (const auto &array : data.cell_arrays)
+        for (const float value : array.values)
+          if (!std::isfinite(value))
+            fail(array.name);
+    }
+
+    /** @p record, a `.pvtu` record, with the cell arrays of @p data. */
+    template <int dim, int spacedim>
+    std::string
+    with_cell_data(std::string record, const PatchData<dim, spacedim> &data)
+    {
+      std::ostringstream element;
+      element << "    <PCellData>\n";
+      for (const auto &array : data.cell_arrays)
+        element << "    <PDataArray type=\"Float32\" Name=\"" << array.name
+                << "\"" << number_of_components(array.n_components)
+                << " format=\"ascii\"/>\n";
+      element << "    </PCellData>\n";
+      const std::size_t points = record.find("    <PPoints>");
+      AssertThrow(points != std::string::npos, ExcInternalError());
+      record.insert(points, element.str());
       return record;
     }
   } // namespace
@@ -387,10 +611,10 @@ namespace PolyFrac
           writers = {0};
       }
     flags.time = time;
+    check_finite(data, path(piece_name(rank)).string());
     if (std::find(writers.begin(), writers.end(), rank) != writers.end())
       write_checked(path(piece_name(rank)), [&](std::ostream &out) {
-        DataOutBase::write_vtu(
-          data.patches, data.names, data.ranges, flags, out);
+        write_vtu_with_cell_data(data, flags, out);
       });
     const std::string file_name = n_ranks == 1 ? piece_name(0) : step + ".pvtu";
     times_and_names.emplace_back(time, file_name);
@@ -407,7 +631,7 @@ namespace PolyFrac
         DataOutBase::write_pvtu_record(
           record, piece_names, data.names, data.ranges, flags);
         write_checked(path(file_name), [&](std::ostream &out) {
-          out << without_date(record.str());
+          out << with_cell_data(without_date(record.str()), data);
         });
       }
     std::ostringstream record;

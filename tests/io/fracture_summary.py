@@ -22,6 +22,9 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_summary import cell_data  # noqa: E402
+
 try:
     import meshio
     import numpy as np
@@ -53,11 +56,11 @@ for row in rows:
     step = int(row["step"])
     vtu = meshio.read(os.path.join(work, "fractures-level-0-%04d.vtu" % step))
     lines = vtu.cells_dict["line"]
-    first = lines[:, 0]  # the face-wise constant data of each line
+    first = lines[:, 0]
     length = np.linalg.norm(vtu.points[lines[:, 1]] - vtu.points[first],
                             axis=1)
-    normal = np.asarray(vtu.point_data["normal_state"])[first]
-    tangential = np.asarray(vtu.point_data["tangential_state"])[first]
+    normal = cell_data(vtu, "normal_state")
+    tangential = cell_data(vtu, "tangential_state")
     where = f"step {step}"
     for name, faces in (("n_open", normal == 0), ("n_stick", tangential == 0),
                         ("n_slip", tangential == 1)):
@@ -70,7 +73,7 @@ for row in rows:
           float(row["slip_area"]))
     for column, field in (("mean_aperture", "aperture"),
                           ("mean_fracture_pressure", "fracture_pressure")):
-        mean = (length * np.asarray(vtu.point_data[field])[first]).sum() / \
+        mean = (length * cell_data(vtu, field)).sum() / \
             length.sum()
         check(where + ", " + column, mean, float(row[column]))
     print(f"{where}: {row['n_open']} open, {row['n_slip']} slipping faces, "

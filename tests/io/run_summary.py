@@ -39,7 +39,7 @@ except ImportError as error:
 
 program, source, work = sys.argv[1:4]
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_summary import NUMBER, fluid_volumes, run_scene  # noqa: E402
+from scene_summary import cell_data, NUMBER, fluid_volumes, run_scene  # noqa: E402
 
 
 def run(name, scene, *settings):
@@ -71,7 +71,7 @@ pressure = re.search(r"Injection pressure at t = 3: " + NUMBER, output)
 if not pressure:
     sys.exit("default scene: no line 'Injection pressure ...'")
 close("injection pressure", float(pressure.group(1)),
-      np.asarray(vtu.point_data["fracture_pressure"])[first][sources].max())
+      cell_data(vtu, "fracture_pressure")[sources].max())
 fractures = re.search(r"Fractures at t = 3: (\d+) of (\d+) faces open "
                       r"\(measure " + NUMBER + r"\), (\d+) slipping "
                       r"\(measure " + NUMBER + r"\); largest opening " +
@@ -91,15 +91,15 @@ if int(n_open) == 0 or int(n_slip) == 0 or int(n_faces) != len(first):
 close("open measure", float(open_measure), float(last["open_area"]))
 close("slip measure", float(slip_measure), float(last["slip_area"]))
 close("largest opening", float(opening),
-      -np.asarray(vtu.point_data["normal_jump"])[first].min())
+      -cell_data(vtu, "normal_jump").min())
 close("largest slip", float(slip),
-      np.linalg.norm(np.asarray(vtu.point_data["tangential_jump"])[first],
+      np.linalg.norm(cell_data(vtu, "tangential_jump"),
                      axis=1).max())
 
 # The flow fields of poromechanics are vectors: the fracture flux lies in
 # the plane of each face, and fluid moves.
-flux = np.asarray(vtu.point_data["fracture_flux"])[first]
-normal = np.asarray(vtu.point_data["n_plus"])[first]
+flux = cell_data(vtu, "fracture_flux")
+normal = cell_data(vtu, "n_plus")
 size = np.linalg.norm(flux, axis=1)
 if flux.shape[1] != 3 or not size.max() > 0:
     sys.exit(f"default scene: fracture_flux is not a moving vector field "
@@ -107,7 +107,7 @@ if flux.shape[1] != 3 or not size.max() > 0:
 if np.abs((flux * normal).sum(axis=1)).max() > 1e-5 * size.max():
     sys.exit("default scene: fracture_flux leaves the plane of its face")
 solution = meshio.read(os.path.join(directory, "solution-level-0-0003.vtu"))
-darcy = np.asarray(solution.point_data["darcy_velocity"])
+darcy = cell_data(solution, "darcy_velocity")
 if darcy.shape[1] != 3 or not np.abs(darcy).max() > 0:
     sys.exit(f"default scene: darcy_velocity is not a moving vector field")
 print(f"default scene: largest fracture flux {size.max()} m^2/s, largest "

@@ -1,6 +1,6 @@
 """Helpers of the Python tests that run a scene and read the summary polyfrac
 prints at the end of a time-dependent run (io/run_summary,
-polyfrac/user_guide_scenes)."""
+polyfrac/user_guide_scenes), and the cell data of its VTU files."""
 import os
 import re
 import shutil
@@ -8,6 +8,13 @@ import subprocess
 import sys
 
 NUMBER = r"([-+0-9.eE]+)"
+
+
+def cell_data(mesh, name):
+    """The cell data array NAME of a meshio mesh, one row per cell in the
+    order of the file (meshio splits it by cell type)."""
+    import numpy
+    return numpy.concatenate(mesh.cell_data[name])
 
 
 def run_scene(program, source, work, name, scene, *settings):

@@ -6,7 +6,9 @@ distorted quadrilaterals) and patch_slip_3d.prm (distorted hexahedra), whose
 solution is piecewise affine and reproduced to round-off, and checks:
 - the list of files written (files_written.py) names exactly the files in
   the output directory, and each .pvd indexes existing .vtu files at t = 0;
-- the field names and the array sizes (points, cells) of both files, and
+- the field names (the displacement as point data, the fields constant
+  over a cell as cell data) and the array sizes (points, cells) of both
+  files, and
   their geometry: every cell has a positive measure and the cells tile the
   domain (matrix) or the fracture;
 - the values against the exact fields: the displacement at every vertex
@@ -29,6 +31,7 @@ import xml.etree.ElementTree as ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from files_written import files_written  # noqa: E402
+from scene_summary import cell_data  # noqa: E402
 
 try:
     import meshio
@@ -42,7 +45,12 @@ except ImportError as error:
 # (1e-14) and of Float32 and catches any wrong value.
 TOLERANCE = 1e-6
 
-MATRIX_FIELDS = {"displacement", "stress", "total_stress", "polytope"}
+# Point data: the displacement (node-side values); cell data: the fields
+# constant over a cell.
+# (and the polytope index, which deal.II needs as one point field to count
+# the points of triangle patches).
+MATRIX_POINT_FIELDS = {"displacement", "polytope"}
+MATRIX_FIELDS = {"stress", "total_stress"}
 FRACTURE_FIELDS = {"fracture", "n_plus", "jump", "normal_jump",
                    "tangential_jump", "traction", "normal_traction",
                    "tangential_traction", "normal_state", "tangential_state"}
@@ -166,8 +174,11 @@ def check_cells(mesh, expected, what):
 
 
 def check_matrix(mesh, scene, n_polytopes):
-    check(set(mesh.point_data) == MATRIX_FIELDS,
-          f"matrix fields {sorted(mesh.point_data)}")
+    check(set(mesh.point_data) == MATRIX_POINT_FIELDS and
+          set(mesh.cell_data) == MATRIX_FIELDS,
+          f"matrix fields {sorted(mesh.point_data)} (point data), "
+          f"{sorted(mesh.cell_data)} (cell data)")
+    n_cells = len(mesh.cells[0].data)
     check_cells(mesh, scene["cells"], "matrix")
     A = np.array(scene["A"])
     dim = len(A)
@@ -184,12 +195,11 @@ def check_matrix(mesh, scene, n_polytopes):
         shift = scene["shift"] if np.mean(x[:, 0]) > 0 else np.zeros(dim)
         check_close(displacement[cell], [pad(A @ p + shift) for p in x],
                     "displacement")
-    check_close(mesh.point_data["stress"],
-                np.tile(padded.flatten(), (len(mesh.points), 1)), "stress")
+    check_close(cell_data(mesh, "stress"),
+                np.tile(padded.flatten(), (n_cells, 1)), "stress")
     # No in-situ stress and no pore pressure: the total stress is sigma.
-    check_close(mesh.point_data["total_stress"],
-                np.tile(padded.flatten(), (len(mesh.points), 1)),
-                "total_stress")
+    check_close(cell_data(mesh, "total_stress"),
+                np.tile(padded.flatten(), (n_cells, 1)), "total_stress")
     polytopes = mesh.point_data["polytope"]
     check(len(np.unique(polytopes)) == n_polytopes,
           f"{len(np.unique(polytopes))} polytope indices, {n_polytopes} "
@@ -197,11 +207,17 @@ def check_matrix(mesh, scene, n_polytopes):
 
 
 def check_fractures(mesh, scene):
-    check(set(mesh.point_data) == FRACTURE_FIELDS,
-          f"fracture fields {sorted(mesh.point_data)}")
+    # The fracture index is point data too (deal.II needs one point field
+    # to count the points of triangle patches).
+    check(set(mesh.point_data) == {"fracture"} and
+          set(mesh.cell_data) == FRACTURE_FIELDS - {"fracture"},
+          f"fracture fields {sorted(mesh.point_data)} (point data), "
+          f"{sorted(mesh.cell_data)} (cell data)")
     check_cells(mesh, scene["fracture_cells"], "fractures")
-    data = mesh.point_data
+    data = {name: cell_data(mesh, name) for name in mesh.cell_data}
+    data["fracture"] = mesh.point_data["fracture"][mesh.cells[0].data[:, 0]]
     n_points = len(mesh.points)
+    n_cells = len(mesh.cells[0].data)
     # The fracture lies in x = 0 and crosses the domain (-1, 1)^dim; the
     # orientation of its faces follows their cells, so measures are unsigned.
     dim = len(scene["A"])
@@ -210,25 +226,25 @@ def check_fractures(mesh, scene):
                    "fractures")
 
     def constant(value):
-        return np.tile(value, (n_points, 1))
+        return np.tile(value, (n_cells, 1))
 
     n = pad(np.array(scene["n_plus"]))
     jump = pad(np.array(scene["shift"]))
     traction = pad(np.array(scene["traction"]))
-    check_close(data["fracture"], np.zeros(n_points), "fracture")
+    check_close(data["fracture"], np.zeros(n_cells), "fracture")
     check_close(data["n_plus"], constant(n), "n_plus")
     check_close(data["jump"], constant(jump), "jump")
-    check_close(data["normal_jump"], np.full(n_points, jump @ n),
+    check_close(data["normal_jump"], np.full(n_cells, jump @ n),
                 "normal_jump")
     check_close(data["tangential_jump"], constant(jump - (jump @ n) * n),
                 "tangential_jump")
     check_close(data["traction"], constant(traction), "traction")
-    check_close(data["normal_traction"], np.full(n_points, traction @ n),
+    check_close(data["normal_traction"], np.full(n_cells, traction @ n),
                 "normal_traction")
     check_close(data["tangential_traction"],
                 constant(traction - (traction @ n) * n), "tangential_traction")
-    check_close(data["normal_state"], np.ones(n_points), "normal_state")
-    check_close(data["tangential_state"], np.ones(n_points),
+    check_close(data["normal_state"], np.ones(n_cells), "normal_state")
+    check_close(data["tangential_state"], np.ones(n_cells),
                 "tangential_state")
 
 
@@ -266,6 +282,10 @@ def read_back(program, source_dir, work_dir, name):
         uncompressed = series(plain, base)
         for field, values in compressed.point_data.items():
             check(np.array_equal(values, uncompressed.point_data[field]),
+                  f"{base}: {field} differs without compression")
+        for field in compressed.cell_data:
+            check(np.array_equal(cell_data(compressed, field),
+                                 cell_data(uncompressed, field)),
                   f"{base}: {field} differs without compression")
     print(f"{name}: files, fields, sizes and values read back")
 

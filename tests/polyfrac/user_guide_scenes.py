@@ -36,7 +36,7 @@ except ImportError as error:
 program, source, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 os.pardir, "io"))
-from scene_summary import fluid_volumes, run_scene  # noqa: E402
+from scene_summary import cell_data, fluid_volumes, run_scene  # noqa: E402
 Q = 2e-5
 
 
@@ -74,9 +74,9 @@ BIOT = 0.8
 
 
 def check_total_stress(name, vtu, expected):
-    """total_stress of every point of vtu against expected (n x 9), to the
+    """total_stress of every cell of vtu against expected (n x 9), to the
     Float32 rounding of stresses of some MPa."""
-    total = np.asarray(vtu.point_data["total_stress"])
+    total = cell_data(vtu, "total_stress")
     error = np.abs(total - expected).max()
     if not error <= 1e-6 * np.abs(expected).max():
         sys.exit(f"{name}: total_stress differs from the expected one by "
@@ -93,8 +93,8 @@ if max(int(row["n_slip"]) for row in rows) == 0:
     sys.exit("2D: no face slips in any step")
 close("2D, injected volume", injected("2D", output), Q * 2 * 10)
 vtu = solution(directory, 10)
-pressure = np.asarray(vtu.point_data["pressure"]).reshape(-1, 1, 1)
-expected = (np.asarray(vtu.point_data["stress"]).reshape(-1, 3, 3) +
+pressure = cell_data(vtu, "pressure").reshape(-1, 1, 1)
+expected = (cell_data(vtu, "stress").reshape(-1, 3, 3) +
             SIGMA_0 - BIOT * pressure * np.diag([1., 1., 0.]))
 check_total_stress("2D injection", vtu, expected.reshape(-1, 9))
 
@@ -117,7 +117,7 @@ print(f"2D at rest under (sigma_0 - b p_0 I) n: largest |u| {u} m")
 vtu = solution(directory, 2)
 at_rest = SIGMA_0 - BIOT * 1e6 * np.diag([1., 1., 0.])
 check_total_stress("2D at rest with p_0", vtu,
-                   np.tile(at_rest.flatten(), (len(vtu.points), 1)))
+                   np.tile(at_rest.flatten(), (len(cell_data(vtu, "total_stress")), 1)))
 directory, _ = run("2d-p0-wrong", "user-guide-2d.prm", *rest, *p0)
 u = largest_displacement(directory, 2)
 if not u > 1e-4:

@@ -45,12 +45,34 @@ namespace PolyFrac
                  std::string,
                  DataComponentInterpretation::DataComponentInterpretation>>
       ranges;
+
+    /** A field with one value per patch, written as VTU cell data. */
+    struct CellArray
+    {
+      /** The name of the data array. */
+      std::string name;
+      /** 1 for a scalar, 3 for a vector, 9 for a tensor (2D vectors and
+       * tensors padded with zeros, as DataOutBase pads point data). */
+      unsigned int n_components;
+      /** The values, patch by patch in the order of #patches. */
+      std::vector<float> values;
+    };
+    /**
+     * The fields constant over each patch, written as VTU cell data (so
+     * that ParaView's cell filters, Threshold or Cell Data to Point Data,
+     * see one value per cell; DataOutBase of deal.II 9.4 writes point data
+     * only): #names and #ranges hold the point data only, the displacement
+     * and the index of the polytope or fracture (DataOutBase 9.4 counts
+     * the points of a triangle patch by the columns of its data, so every
+     * patch keeps one row).
+     */
+    std::vector<CellArray> cell_arrays;
   };
 
   /** A scalar or vector field with one value per polytope (matrix output)
-   * or per fracture face (fracture output), written as constant patch
-   * data: a VTU array of one component, or of 3 for a vector (deal.II pads
-   * 2D vectors with a zero). */
+   * or per fracture face (fracture output), written as VTU cell data: an
+   * array of one component, or of 3 for a vector (2D vectors padded with
+   * a zero). */
   struct OutputField
   {
     /** The name of the data array in the VTU file. */
@@ -86,7 +108,8 @@ namespace PolyFrac
    * stress of the displacement, a tensor), `total_stress` (σ_K + σ0(x̄_K)
    * − b p_K I: with the in-situ stress and, given @p biot_pressure, the
    * values b p_K, the pore pressure; doc/scheme.md §1), `polytope` (the
-   * index of K) and the @p cell_fields are constant over the patch.
+   * index of K) and the @p cell_fields are constant over the patch: cell
+   * data, but `polytope`, point data (PatchData::cell_arrays).
    * Without @p elasticity and @p state (a model without mechanics) the
    * displacement and the stresses are left out. On more than one rank, the
    * patches of this rank's polytopes (@p dofs).
@@ -111,8 +134,8 @@ namespace PolyFrac
    * λ (`traction`), `normal_traction` and `tangential_traction`, and with
    * contact states `normal_state` (0 open, 1 contact) and
    * `tangential_state` (0 stick, 1 slip, 2 free: no friction acts); then
-   * the @p face_fields. On more than one rank, the patches of this rank's
-   * fracture faces (@p dofs).
+   * the @p face_fields: cell data, but `fracture`, point data. On more than one
+   * rank, the patches of this rank's fracture faces (@p dofs).
    */
   template <int dim>
   PatchData<dim - 1, dim>
