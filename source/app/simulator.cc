@@ -336,6 +336,28 @@ namespace PolyFrac
           value = (errors.*member)->value;
       return value;
     };
+    // A value that is not finite came from data beyond double precision
+    // (about 1e308; the errors square the fields) or a diverged solve: the
+    // run stops rather than write it as a result.
+    for (const auto &[column, value] :
+         std::vector<std::pair<std::string, std::optional<double>>>{
+           {"mean_aperture", report.mean_aperture},
+           {"mean_fracture_pressure", report.mean_fracture_pressure},
+           {"open_area", report.open_area},
+           {"slip_area", report.slip_area},
+           {"err_pressure", error("err_pressure")},
+           {"err_fracture_pressure", error("err_fracture_pressure")},
+           {"err_u", error("err_u")},
+           {"energy_residual", report.energy_residual}})
+      AssertThrow(!value || std::isfinite(*value),
+                  ExcMessage("The step to t = " + std::to_string(t) +
+                             " gives " + column + " = " +
+                             std::to_string(*value) +
+                             ", not a finite number: a load, source, "
+                             "coefficient or exact field of the scene is "
+                             "beyond the range of double precision (about "
+                             "1e308; the errors square the fields), or the "
+                             "solve diverged. Check their magnitudes."));
     std::ostringstream out;
     out << step << ',' << std::setprecision(12) << t << ',' << time_step
         << std::setprecision(6) << ',' << cuts;
@@ -550,7 +572,7 @@ namespace PolyFrac
   {
     level_parameters.push_back(prm);
     level_parameters.back().solver.method =
-      prm.solver.method_for(dim, discretization.mesh->n_cells());
+      prm.solver.method_for(dim, discretization.dofs->n_node_sides());
     return level_parameters.back();
   }
 
@@ -581,7 +603,7 @@ namespace PolyFrac
 
     const Parameters &level_prm = parameters_of_level(discretization);
     out << "Level " << level << ": "
-        << prm.solver.describe_choice(dim, discretization.mesh->n_cells())
+        << prm.solver.describe_choice(dim, discretization.dofs->n_node_sides())
         << std::endl;
     discretization.print_summary(out);
 

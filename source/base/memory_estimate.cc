@@ -113,6 +113,8 @@ namespace PolyFrac
                    const unsigned int n_ranks_on_node,
                    const unsigned int n_ranks)
   {
+    // The solver Method = automatic would choose, with the nodes counted
+    // as the cells (a box of hexahedra; more cells than nodes otherwise).
     const double one_rank =
       n_cells *
       bytes_per_cell[prm.dim - 2]

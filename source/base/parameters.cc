@@ -917,9 +917,10 @@ namespace PolyFrac
                       "automatic",
                       Patterns::Selection("automatic|direct|AMG"),
                       "automatic: direct for a level of at most 100,000 "
-                      "cells in 2D or 2,000 in 3D, AMG above (measured on "
-                      "elasticity, parameters.h); each level says its "
-                      "choice on its first line. "
+                      "node sides (nodal unknowns over the dimension) in 2D "
+                      "or 2,000 in 3D, AMG above (measured on elasticity, "
+                      "parameters.h); each level says its choice on its "
+                      "first line. "
                       "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
                       "(smoothed aggregation with the rigid-body modes) for "
                       "elasticity, and for the symmetric condensed contact "
@@ -1151,7 +1152,34 @@ namespace PolyFrac
       {
         const std::vector<std::string> key_value =
           Utilities::split_string_list(pair, '=');
-        constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
+        const std::string where = "In <" + file_name +
+                                  ">, subsection <Expressions>, <Function "
+                                  "constants>: <" +
+                                  pair + ">";
+        // The pattern (a map of names to doubles) has checked the form.
+        const std::string &name = key_value[0];
+        // The names the expressions already have (muparser throws an
+        // uncaught error at the first expression otherwise).
+        for (const std::string taken : {"x", "y", "z", "t", "pi", "Pi"})
+          AssertThrow(name != taken,
+                      ExcMessage(where + ": <" + name +
+                                 "> is a variable or constant of every "
+                                 "expression already; choose another name."));
+        AssertThrow(!name.empty() &&
+                      std::isalpha(static_cast<unsigned char>(name[0])) &&
+                      std::all_of(name.begin(),
+                                  name.end(),
+                                  [](const char c) {
+                                    return std::isalnum(
+                                             static_cast<unsigned char>(c)) ||
+                                           c == '_';
+                                  }),
+                    ExcMessage(where + ": <" + name +
+                               "> is not a name (a letter, then letters, "
+                               "digits or _)."));
+        AssertThrow(constants.count(name) == 0,
+                    ExcMessage(where + ": <" + name + "> is defined twice."));
+        constants[name] = Utilities::string_to_double(key_value[1]);
       }
     prm->leave_subsection();
 
@@ -2179,25 +2207,25 @@ namespace PolyFrac
   }
   std::string
   Parameters::SolverData::method_for(const unsigned int dim,
-                                     const double       n_cells) const
+                                     const double       n_nodes) const
   {
     if (!automatic)
       return method;
-    return n_cells <= largest_direct_level[dim - 2] ? "direct" : "AMG";
+    return n_nodes <= largest_direct_level[dim - 2] ? "direct" : "AMG";
   }
 
 
 
   std::string
   Parameters::SolverData::describe_choice(const unsigned int dim,
-                                          const double       n_cells) const
+                                          const double       n_nodes) const
   {
     std::ostringstream choice;
-    choice << "linear solver " << method_for(dim, n_cells);
+    choice << "linear solver " << method_for(dim, n_nodes);
     if (automatic)
-      choice << " (Linear solver/Method = automatic: " << n_cells
-             << " cells, AMG above " << largest_direct_level[dim - 2] << " in "
-             << dim << "D)";
+      choice << " (Linear solver/Method = automatic: " << n_nodes
+             << " node sides, AMG above " << largest_direct_level[dim - 2]
+             << " in " << dim << "D)";
     else
       choice << " (Linear solver/Method)";
     return choice.str();

@@ -1,5 +1,8 @@
 #include <polyfrac/postprocessing/fluid_volumes.h>
 
+#include <cmath>
+#include <sstream>
+
 
 namespace PolyFrac
 {
@@ -132,6 +135,27 @@ namespace PolyFrac
           if (!edges.edges[edges.face_edges[i][k].edge].boundary_ids.empty())
             volumes.outflow += dt * fluxes[k];
       }
+    // A source, pressure or coefficient beyond double precision (1e300)
+    // gives inf or NaN here while the mass balances, relative to their
+    // largest terms, may still look closed.
+    std::ostringstream printed;
+    volumes.print(printed);
+    AssertThrow(std::isfinite(volumes.injected) &&
+                  std::isfinite(volumes.extracted) &&
+                  std::isfinite(volumes.outflow) &&
+                  std::isfinite(volumes.stored_in_matrix) &&
+                  std::isfinite(volumes.stored_in_fractures),
+                ExcMessage(
+                  "In <" + prm.file_name +
+                  ">: the step to t = " + std::to_string(data.time) +
+                  " moves fluid volumes that are not finite numbers (" +
+                  printed.str() +
+                  "): a source, pressure, permeability or load of "
+                  "the scene is beyond the range of double "
+                  "precision (about 1e308), or its solve diverged. "
+                  "Check the magnitudes of Flow/Matrix source, "
+                  "Fracture source, the pressure and flux boundary "
+                  "data and the initial pressure."));
     return volumes;
   }
 

@@ -638,6 +638,39 @@ CASES = {
             "Flow", Permeability="0", Fracture_source="1e-6",
             Fracture_compressibility="0", Pressure_boundary_ids="0")},
         stage="level"),
+    "function_constants_variable": case(
+        "`Expressions/Function constants = x=1` (was SIGABRT: muparser's "
+        "error escaped at the first expression)",
+        ["<Function constants>: <x=1>: <x> is a variable or constant of "
+         "every expression already"],
+        files={"scene.prm": section("Expressions", Function_constants="x=1")}),
+    "function_constants_not_a_name": case(
+        "`Expressions/Function constants = 2a=1` (was SIGABRT, as x=1)",
+        ["<Function constants>: <2a=1>: <2a> is not a name"],
+        files={"scene.prm": section("Expressions", Function_constants="2a=1")}),
+    "function_constants_twice": case(
+        "`Expressions/Function constants = c=1, c=2` (the second silently "
+        "won)",
+        ["<Function constants>: <c=2>: <c> is defined twice"],
+        files={"scene.prm": section("Expressions",
+                                    Function_constants="c=1, c=2")}),
+    "function_constants_not_a_number": case(
+        "`Expressions/Function constants = c=abc`: refused by the entry's "
+        "pattern",
+        ["The entry value c=abc for the entry named Function constants does "
+         "not match the given pattern"],
+        files={"scene.prm": section("Expressions",
+                                    Function_constants="c=abc")}),
+    "exact_pressure_beyond_double": case(
+        "`Model = flow`, `Exact solution/Matrix pressure = 1e300` (was exit "
+        "0 with err_pressure = -nan: the error squares the field)",
+        ["gives err_pressure = ", "not a finite number",
+         "beyond the range of double precision"],
+        files={"scene.prm": FLOW + section(
+            "Flow", Pressure_boundary_ids="0") + section(
+            "Exact solution", Matrix_pressure="1e300") + section(
+            "Output", Write_VTU="false")},
+        stage="level"),
     "flow_time_dependent_permeability": case(
         "`Model = flow`, `Flow/Permeability = 1e-15 * (1 + t)` (was "
         "evaluated at t = 0 only)",

@@ -38,7 +38,7 @@ main()
                          "node of 4 ranks needs"));
 
   // The default, Linear solver/Method = automatic, solves a 3D level of
-  // more than 2,000 cells by AMG, whose estimate is the smaller.
+  // more than 2,000 nodes by AMG, whose estimate is the smaller.
   const Parameters automatic(3);
   AssertThrow(automatic.solver.automatic &&
                 automatic.solver.method_for(3, 2000) == "direct" &&
@@ -46,10 +46,10 @@ main()
                 automatic.solver.method_for(2, 1e5) == "direct" &&
                 automatic.solver.method_for(2, 1e5 + 1) == "AMG",
               ExcMessage("Method = automatic must be the default and choose "
-                         "AMG above 2,000 cells in 3D and 1e5 in 2D"));
+                         "AMG above 2,000 nodes in 3D and 1e5 in 2D"));
   AssertThrow(estimated_memory(automatic, n_cells) < one_rank,
               ExcMessage("AMG must need less memory than UMFPACK"));
-  std::cout << "Method = automatic: AMG above 2000 cells in 3D, "
+  std::cout << "Method = automatic: AMG above 2000 nodes in 3D, "
             << estimated_memory(automatic, n_cells) / 1e9 << " GB for 1e5 cells"
             << std::endl;
 
