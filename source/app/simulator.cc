@@ -175,6 +175,22 @@ namespace PolyFrac
       read(archive);
     }
 
+    /**
+     * Why @p where's @p column = @p value, not a finite number, is not
+     * written as a result.
+     */
+    std::string
+    not_finite(const std::string &where,
+               const std::string &column,
+               const double       value)
+    {
+      return where + " gives " + column + " = " + std::to_string(value) +
+             ", not a finite number: a load, source, coefficient or exact "
+             "field of the scene is beyond the range of double precision "
+             "(about 1e308; the errors square the fields), or the solve "
+             "diverged. Check their magnitudes.";
+    }
+
     /** Writes @p value to @p out if it is given (an empty csv cell if not). */
     template <typename T>
     void
@@ -350,14 +366,9 @@ namespace PolyFrac
            {"err_u", error("err_u")},
            {"energy_residual", report.energy_residual}})
       AssertThrow(!value || std::isfinite(*value),
-                  ExcMessage("The step to t = " + std::to_string(t) +
-                             " gives " + column + " = " +
-                             std::to_string(*value) +
-                             ", not a finite number: a load, source, "
-                             "coefficient or exact field of the scene is "
-                             "beyond the range of double precision (about "
-                             "1e308; the errors square the fields), or the "
-                             "solve diverged. Check their magnitudes."));
+                  ExcMessage(not_finite("The step to t = " + std::to_string(t),
+                                        column,
+                                        *value)));
     std::ostringstream out;
     out << step << ',' << std::setprecision(12) << t << ',' << time_step
         << std::setprecision(6) << ',' << cuts;
@@ -633,6 +644,12 @@ namespace PolyFrac
                        model->errors(end_time),
                        newton_iterations,
                        wall.wall_time()};
+    for (const auto &[column, member] : error_columns())
+      AssertThrow(!(row.errors.*member) ||
+                    std::isfinite((row.errors.*member)->value),
+                  ExcMessage(not_finite("Level " + std::to_string(level),
+                                        column,
+                                        (row.errors.*member)->value)));
     timer.leave_subsection();
     // A static model's one state is written once its errors are known (an
     // exact field that is not finite stops the run before any file).

@@ -237,6 +237,15 @@ CASES = {
             "Contact", Friction_law="frictionless") + section(
             "Exact solution", Contact_traction="log(-1); 0")},
         stage="level"),
+    "exact_contact_traction_beyond_double": case(
+        "exact contact traction `1e300; 0`: finite, but its error integral "
+        "is not (was exit 0 with -nan errors in convergence.csv)",
+        ["Level 0 gives err_lambda_", "not a finite number",
+         "beyond the range of double precision"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="frictionless") + section(
+            "Exact solution", Contact_traction="1e300; 0")},
+        stage="level"),
     # Boundary ids.
     "neumann_id_unknown": case(
         "`Neumann boundary ids = 7` on a box (ids 0 to 3)",
