@@ -191,6 +191,78 @@ SCALAR_EXACT = {"Exact solution/Fracture pressure",
                 "Exact solution/Matrix pressure"}
 
 
+# The variants of the entries whose values have a structure of their own.
+FIXED_VARIANTS = {
+    "Expressions/Function constants": [
+        ('duplicate', 'c=1, c=2'),
+        ('conflicting (variable)', 'x=1'),
+        ('conflicting (t)', 't=1'),
+        ('nan', 'c=nan'),
+        ('inf', 'c=1/0'),
+        ('malformed', 'c'),
+    ],
+    "Convergence study/Maximum errors": [
+        ('negative', 'err_u: -1'),
+        ('unknown column', 'nosuch: 1'),
+        ('nan', 'err_u: nan'),
+        ('malformed', 'err_u'),
+        ('duplicate', 'err_u: 1, err_u: 2'),
+        ('not used by this model', 'err_pressure: 1'),
+    ],
+    "Convergence study/Minimum rates": [
+        ('negative', 'err_u: -1'),
+        ('unknown column', 'nosuch: 1'),
+        ('nan', 'err_u: nan'),
+        ('malformed', 'err_u'),
+        ('huge', 'err_u: 1e300'),
+        ('single level', 'h: 1'),
+    ],
+    "Boundary conditions/Dirichlet components": [
+        ('unknown component', '0: w'),
+        ('id that does not exist', '99: x'),
+        ('duplicate', '0: x; 0: y'),
+        ('repeated component', '0: x, x'),
+        ('negative id', '-1: x'),
+        ('malformed', '0 x'),
+    ],
+    "Time/Output times": [
+        ('duplicate', '0.1, 0.1'),
+        ('decreasing', '0.15, 0.1'),
+        ('negative', '-1'),
+        ('beyond End time', '1e300'),
+        ('zero', '0'),
+        ('nan', 'nan'),
+    ],
+    "Fractures/Segments": [
+        ('degenerate', '0, 0 : 0, 0'),
+        ('duplicate', '-0.5, 0 : 0.5, 0; -0.5, 0 : 0.5, 0'),
+        ('outside the box', '5, 5 : 6, 6'),
+        ('nan', 'nan, 0 : 0.5, 0'),
+        ('malformed', '-0.5, 0 : 0.5'),
+        ('empty', ''),
+    ],
+    "Fractures/Polygons": [
+        ('not used in 2D', '0,0,0 : 1,0,0 : 0,1,0'),
+        ('malformed', 'garbage'),
+        ('nan', 'nan,0,0 : 1,0,0 : 0,1,0'),
+    ],
+    "Fractures/Gmsh physical tags": [
+        ('not used by this mesh source', '1'),
+        ('negative', '-1'),
+        ('duplicate', '1, 1'),
+        ('malformed', 'a'),
+    ],
+    "Mesh/Local refinement box": [
+        ('inverted', '0.5, 0.5 : -0.5, -0.5'),
+        ('outside the box', '5, 5 : 6, 6'),
+        ('nan', 'nan, 0 : 0.5, 0.5'),
+        ('huge', '-1e300, -1e300 : 1e300, 1e300'),
+        ('wrong component count', '0 : 1'),
+        ('empty', ''),
+    ],
+}
+
+
 def variants(path, default, help_text, work_dir):
     """[(kind, value)] for one entry, at most about 6."""
     name = path.split("/")[-1]
@@ -216,47 +288,8 @@ def variants(path, default, help_text, work_dir):
         return [("empty", ""),
                 ("a file", os.path.join(work_dir, "not_a_mesh.msh")),
                 ("unwritable", "/proc/polyfrac-out")]
-    if path == "Expressions/Function constants":
-        return [("duplicate", "c=1, c=2"), ("conflicting (variable)", "x=1"),
-                ("conflicting (t)", "t=1"), ("nan", "c=nan"),
-                ("inf", "c=1/0"), ("malformed", "c")]
-    if path == "Convergence study/Maximum errors":
-        return [("negative", "err_u: -1"), ("unknown column", "nosuch: 1"),
-                ("nan", "err_u: nan"), ("malformed", "err_u"),
-                ("duplicate", "err_u: 1, err_u: 2"),
-                ("not used by this model", "err_pressure: 1")]
-    if path == "Convergence study/Minimum rates":
-        return [("negative", "err_u: -1"), ("unknown column", "nosuch: 1"),
-                ("nan", "err_u: nan"), ("malformed", "err_u"),
-                ("huge", "err_u: 1e300"),
-                ("single level", "h: 1")]
-    if path == "Boundary conditions/Dirichlet components":
-        return [("unknown component", "0: w"), ("id that does not exist",
-                                                "99: x"),
-                ("duplicate", "0: x; 0: y"), ("repeated component", "0: x, x"),
-                ("negative id", "-1: x"), ("malformed", "0 x")]
-    if path == "Time/Output times":
-        return [("duplicate", "0.1, 0.1"), ("decreasing", "0.15, 0.1"),
-                ("negative", "-1"), ("beyond End time", "1e300"),
-                ("zero", "0"), ("nan", "nan")]
-    if path == "Fractures/Segments":
-        return [("degenerate", "0, 0 : 0, 0"),
-                ("duplicate", "-0.5, 0 : 0.5, 0; -0.5, 0 : 0.5, 0"),
-                ("outside the box", "5, 5 : 6, 6"),
-                ("nan", "nan, 0 : 0.5, 0"),
-                ("malformed", "-0.5, 0 : 0.5"), ("empty", "")]
-    if path == "Fractures/Polygons":
-        return [("not used in 2D", "0,0,0 : 1,0,0 : 0,1,0"),
-                ("malformed", "garbage"), ("nan", "nan,0,0 : 1,0,0 : 0,1,0")]
-    if path == "Fractures/Gmsh physical tags":
-        return [("not used by this mesh source", "1"), ("negative", "-1"),
-                ("duplicate", "1, 1"), ("malformed", "a")]
-    if path == "Mesh/Local refinement box":
-        return [("inverted", "0.5, 0.5 : -0.5, -0.5"),
-                ("outside the box", "5, 5 : 6, 6"),
-                ("nan", "nan, 0 : 0.5, 0.5"),
-                ("huge", "-1e300, -1e300 : 1e300, 1e300"),
-                ("wrong component count", "0 : 1"), ("empty", "")]
+    if path in FIXED_VARIANTS:
+        return FIXED_VARIANTS[path]
     if "boundary ids" in name.lower():
         return [("duplicate", "0, 0"), ("id that does not exist", "99"),
                 ("negative", "-1"), ("conflicting", "0"),
