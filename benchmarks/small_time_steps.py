@@ -132,7 +132,7 @@ class Mandel:
 
     def settings(self, h):
         nx, ny = round(100 / h), round(10 / h)
-        return [("Mesh/Source", "hyper rectangle"),
+        return [("Mesh/Source", "hyper rectangle"), ("Mesh/File name", ""),
                 ("Mesh/Subdivisions", "%d, %d" % (nx, ny)),
                 ("Boundary conditions/Dirichlet boundary ids", "0, 2, 3"),
                 ("Boundary conditions/Dirichlet components",

@@ -14,6 +14,7 @@
 
 #include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/simulator.h>
+#include <polyfrac/base/exception_message.h>
 
 #include <dlfcn.h>
 
@@ -323,19 +324,13 @@ main(int argc, char **argv)
                     "UMFPACK ran out of memory. " + out_of_memory_advice :
                     Utilities::trim(info.str()));
     }
-  catch (const ExceptionBase &e)
-    {
-      std::ostringstream info;
-      e.print_info(info);
-      return stop(Utilities::trim(info.str()));
-    }
   catch (const std::bad_alloc &)
     {
       return stop("out of memory (std::bad_alloc). " + out_of_memory_advice);
     }
   catch (const std::exception &e)
     {
-      return stop(e.what());
+      return stop(exception_message(e));
     }
   return 0;
 }

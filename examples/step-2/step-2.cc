@@ -983,8 +983,8 @@ main(int argc, char **argv)
  * Coulomb friction
  * ----------------
  *
- * `./step-2 --set "Contact/Friction law=Coulomb"` replaces the threshold g
- * by F λ_n with F = 1 (the file sets Friction coefficient = 1). Since the
+ * `./step-2 --set "Contact/Friction law=Coulomb" --set "Contact/Friction
+ * coefficient=1"` replaces the threshold g by F λ_n with F = 1. Since the
  * exact λ_n = 1, the exact solution is the same, but the discrete problem
  * is not: the threshold is now the discrete λ_{n,σ}, and the slip row of
  * the Jacobian is coupled to the normal unknowns. We measured:

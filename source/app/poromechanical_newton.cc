@@ -2,6 +2,7 @@
 #include <deal.II/lac/sparse_direct.h>
 
 #include <polyfrac/app/poromechanical_newton.h>
+#include <polyfrac/base/exception_message.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/base/progress_line.h>
 #include <polyfrac/contact/saddle_point.h>
@@ -648,7 +649,7 @@ namespace PolyFrac
         result.failure = "the Newton step of the coupled system failed at "
                          "iteration " +
                          std::to_string(result.iterations + 1) + ": " +
-                         e.what();
+                         exception_message(e);
         return result;
       }
     if (!result.converged)

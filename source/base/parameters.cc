@@ -63,6 +63,9 @@ namespace PolyFrac
                           ExcMessage(where + ": <" + parts[d] +
                                      "> is not a number."));
             }
+          AssertThrow(std::isfinite(p[d]),
+                      ExcMessage(where + ": <" + parts[d] +
+                                 "> is not a finite number."));
         }
       return p;
     }
@@ -833,7 +836,8 @@ namespace PolyFrac
     prm.declare_entry("HFV stabilisation",
                       "auto",
                       Patterns::Anything(),
-                      "alpha > 0 of the hybrid finite volume stabilisation, "
+                      "alpha in [1e-6, 1e6] of the hybrid finite volume "
+                      "stabilisation, "
                       "or auto: sqrt(d) in the matrix and sqrt(d-1) in the "
                       "fractures (Eymard, Gallouet, Herbin 2010). Affine "
                       "pressures are exact for every alpha.");
@@ -1201,6 +1205,20 @@ namespace PolyFrac
                   ExcMessage(where + ": <Lower left corner> must be below "
                                      "<Upper right corner> in every "
                                      "coordinate."));
+    {
+      // Cell measures and the integrals over the box must be doubles.
+      double measure = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        measure *= mesh.upper_right[d] - mesh.lower_left[d];
+      AssertThrow(std::isfinite(measure) && measure > 1e-250,
+                  ExcMessage(where + ": the box from <Lower left corner> = " +
+                             prm->get("Lower left corner") +
+                             " to <Upper right corner> = " +
+                             prm->get("Upper right corner") + " has measure " +
+                             Utilities::to_string(measure) +
+                             ", beyond the range of double precision: give "
+                             "the coordinates in m."));
+    }
     mesh.subdivisions.clear();
     for (const std::string &s :
          Utilities::split_string_list(prm->get("Subdivisions")))
@@ -1216,6 +1234,14 @@ namespace PolyFrac
                                      "<lower corner : upper corner>."));
       mesh.box_lower = box[0][0];
       mesh.box_upper = box[0][1];
+      for (unsigned int d = 0; d < dim; ++d)
+        AssertThrow(mesh.box_lower[d] <= mesh.box_upper[d],
+                    ExcMessage(where + ": <Local refinement box> = " +
+                               prm->get("Local refinement box") +
+                               ": its lower corner lies above its upper one "
+                               "in direction " +
+                               std::to_string(d) +
+                               "; give <lower corner : upper corner>."));
     }
     mesh.refinement       = prm->get("Refinement");
     mesh.refined_fraction = prm->get_double("Refined fraction");
@@ -1240,6 +1266,13 @@ namespace PolyFrac
     mesh.cells_per_polytope   = prm->get_integer("Cells per polytope");
     mesh.file_name            = prm->get("File name");
     prm->leave_subsection();
+    AssertThrow(mesh.source == "gmsh" || mesh.file_name.empty(),
+                ExcMessage(
+                  where + ": <File name> = " + mesh.file_name +
+                  " is read only with <Source = gmsh>, but Source is " +
+                  mesh.source +
+                  ": set Source = gmsh to mesh from this file, or "
+                  "remove File name to mesh the box."));
     if (mesh.source == "gmsh")
       {
         AssertThrow(!mesh.file_name.empty(),
@@ -1259,7 +1292,13 @@ namespace PolyFrac
     fractures.geometries =
       parse_point_lists(prm->get(dim == 2 ? "Segments" : "Polygons"),
                         dim,
-                        fwhere);
+                        fwhere + (dim == 2 ? " <Segments>" : " <Polygons>"));
+    for (unsigned int i = 0; i < fractures.geometries.size(); ++i)
+      AssertThrow(dim == 3 || fractures.geometries[i].size() != 2 ||
+                    fractures.geometries[i][0] != fractures.geometries[i][1],
+                  ExcMessage(fwhere + " <Segments>: segment " +
+                             std::to_string(i) +
+                             " has length 0 (its two points coincide)."));
     for (unsigned int i = 0; i < fractures.geometries.size(); ++i)
       AssertThrow((dim == 2 && fractures.geometries[i].size() == 2) ||
                     (dim == 3 && fractures.geometries[i].size() >= 3),
@@ -1369,7 +1408,9 @@ namespace PolyFrac
       Patterns::Tools::Convert<Bounds>::to_value(prm->get("Maximum errors"));
     checks.minimum_rates =
       Patterns::Tools::Convert<Bounds>::to_value(prm->get("Minimum rates"));
-    for (const auto *bounds : {&checks.maximum_errors, &checks.minimum_rates})
+    for (const auto &[entry, bounds] :
+         {std::make_pair("Maximum errors", &checks.maximum_errors),
+          std::make_pair("Minimum rates", &checks.minimum_rates)})
       for (const auto &[column, bound] : *bounds)
         {
           const std::string &field =
@@ -1383,8 +1424,8 @@ namespace PolyFrac
                                 (column == "err_u" || column == "err_grad_u" ||
                                  column == "err_pressure");
           AssertThrow(!field.empty() || analytic,
-                      ExcMessage("In <" + file_name +
-                                 ">: Convergence study checks " + column +
+                      ExcMessage("In <" + file_name + ">: Convergence study/" +
+                                 entry + " checks " + column +
                                  ", but its exact field is not given in "
                                  "subsection Exact solution."));
         }
@@ -1434,8 +1475,14 @@ namespace PolyFrac
     read_flow();
 
     prm->enter_subsection("Nonlinear solver");
-    nonlinear.max_iterations     = prm->get_integer("Maximum iterations");
-    nonlinear.tolerance          = prm->get_double("Tolerance");
+    nonlinear.max_iterations = prm->get_integer("Maximum iterations");
+    nonlinear.tolerance      = prm->get_double("Tolerance");
+    AssertThrow(nonlinear.tolerance > 0 && nonlinear.tolerance < 1,
+                ExcMessage("In <" + file_name +
+                           ">, subsection <Nonlinear solver>: <Tolerance> = " +
+                           prm->get("Tolerance") +
+                           " must be in (0, 1): the residuals are relative, "
+                           "and round-off keeps them above 0."));
     nonlinear.initial_guess      = prm->get("Initial guess");
     nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
     AssertThrow(nonlinear.coupling_tolerance > 0 &&
@@ -1462,12 +1509,26 @@ namespace PolyFrac
              NonlinearData::CouplingScheme::automatic);
     }
     nonlinear.forcing_term = prm->get_double("Forcing term");
+    AssertThrow(nonlinear.forcing_term < 1,
+                ExcMessage("In <" + file_name +
+                           ">, subsection <Nonlinear solver>: <Forcing term> "
+                           "= " +
+                           prm->get("Forcing term") +
+                           " must be in [0, 1): the Krylov solve of a Newton "
+                           "step must reduce its residual."));
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
-    solver.automatic       = prm->get("Method") == "automatic";
-    solver.method          = solver.automatic ? "direct" : prm->get("Method");
-    solver.tolerance       = prm->get_double("Tolerance");
+    solver.automatic = prm->get("Method") == "automatic";
+    solver.method    = solver.automatic ? "direct" : prm->get("Method");
+    solver.tolerance = prm->get_double("Tolerance");
+    AssertThrow(solver.tolerance > 0 && solver.tolerance < 1,
+                ExcMessage("In <" + file_name +
+                           ">, subsection <Linear solver>: <Tolerance> = " +
+                           prm->get("Tolerance") +
+                           " must be in (0, 1): it is relative to the "
+                           "right-hand side, and round-off keeps the "
+                           "residual above 0."));
     solver.max_iterations  = prm->get_integer("Maximum iterations");
     solver.smoother_sweeps = prm->get_integer("Smoother sweeps");
     prm->leave_subsection();
@@ -1475,11 +1536,11 @@ namespace PolyFrac
     prm->enter_subsection("Output");
     output.directory =
       resolved(prm->get("Output directory"), directory_of(file_name));
-    prm->set("Output directory", absolute_path(output.directory));
     AssertThrow(!output.directory.empty(),
                 ExcMessage("In <" + file_name +
                            ">: Output/Output directory is empty: name a "
                            "directory, e.g. output."));
+    prm->set("Output directory", absolute_path(output.directory));
     output.write_vtu           = prm->get_bool("Write VTU");
     output.vtu_compression     = prm->get("VTU compression");
     output.print_timings       = prm->get_bool("Print timings");
@@ -1593,6 +1654,26 @@ namespace PolyFrac
       bounded("Fracture aperture at contact", 0, infinity, false, ">= 0 (m)");
     flow.minimum_aperture =
       bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
+    for (const std::string entry :
+         {"Minimum fracture aperture", "Fracture aperture at contact"})
+      {
+        // The cubic law's conductivity d³/(12 η) of the aperture must be a
+        // positive double, or the fracture flow is singular or infinite.
+        const double d = prm->get_double(entry);
+        const double conductivity =
+          std::pow(std::max(d, flow.minimum_aperture), 3) /
+          (12 * flow.viscosity);
+        AssertThrow(std::isnormal(conductivity) && conductivity > 0,
+                    ExcMessage(where + "<" + entry + "> = " + prm->get(entry) +
+                               " with <Viscosity> = " + prm->get("Viscosity") +
+                               " gives the cubic-law conductivity d^3/(12 "
+                               "viscosity) = " +
+                               Utilities::to_string(conductivity) +
+                               ", which is not a positive double (or a "
+                               "denormal one, without digits): give "
+                               "the apertures in m (about 1e-6 to 1e-2) and "
+                               "the viscosity in Pa s (1e-3 for water)."));
+      }
     flow.face_bubbles = prm->get_bool("Face bubbles");
     flow.pressure_stabilisation =
       bounded("Pressure stabilisation", 0, infinity, false, ">= 0");
@@ -1640,10 +1721,14 @@ namespace PolyFrac
           {
             flow.stabilisation = -1;
           }
-        AssertThrow(flow.stabilisation > 0 && std::isfinite(flow.stabilisation),
+        // Any α > 0 gives a consistent scheme, but the flow matrix's
+        // condition number grows like max(α, 1/α).
+        AssertThrow(flow.stabilisation >= 1e-6 && flow.stabilisation <= 1e6,
                     ExcMessage(where +
                                "<HFV stabilisation> must be auto or a "
-                               "positive number, not <" +
+                               "number in [1e-6, 1e6] (the flow matrix's "
+                               "condition number grows like max(alpha, "
+                               "1/alpha)), not <" +
                                alpha + ">."));
       }
     prm->leave_subsection();
@@ -1785,6 +1870,18 @@ namespace PolyFrac
                            " the elastic energy is positive only for "
                            "lambda > -2 mu/d = " +
                            std::to_string(bound) + "."));
+    // The shear stiffness μ must survive the round-off of λ + 2μ in the
+    // stiffness (a relative 1e-16): beyond λ = 1e12 μ (Poisson's ratio
+    // 0.5 − 5e-13) the divergence-free motions are determined by round-off.
+    std::ostringstream values;
+    values << "<Lame lambda> = " << lame_lambda
+           << " is more than 1e12 times <Lame mu> = " << lame_mu;
+    AssertThrow(lame_lambda <= 1e12 * lame_mu,
+                ExcMessage(where + values.str() +
+                           ": the shear stiffness is lost in the round-off of "
+                           "lambda + 2 mu (Poisson's ratio 0.5 to 12 digits). "
+                           "Give both in Pa; rock has lambda/mu of about 0.5 "
+                           "to 5."));
   }
 
 
@@ -1984,6 +2081,14 @@ namespace PolyFrac
     else
       {
         warn_if_set("Fractures", "Traction");
+        if (model != "flow" && contact.friction_law != "Tresca")
+          warn_if_set("Contact",
+                      "Tresca threshold",
+                      "Contact/Friction law = " + contact.friction_law);
+        if (model != "flow" && contact.friction_law != "Coulomb")
+          warn_if_set("Contact",
+                      "Friction coefficient",
+                      "Contact/Friction law = " + contact.friction_law);
         if (!contact.bubbles && solver.method == "AMG")
           warnings.push_back(
             "Linear solver/Method = AMG condenses the contact Newton steps "
@@ -2045,6 +2150,49 @@ namespace PolyFrac
         warn_if_set("Nonlinear solver", entry);
     if (mesh.refinement == "uniform")
       warn_if_set("Mesh", "Refined fraction", "Mesh/Refinement = uniform");
+    if (mesh.source == "gmsh")
+      {
+        for (const std::string entry : {"Cell type", "Subdivisions"})
+          warn_if_set("Mesh", entry, "Mesh/Source = gmsh");
+        // The corners also give the box of an analytic solution.
+        if (exact.analytic_solution == "none")
+          for (const std::string entry :
+               {"Lower left corner", "Upper right corner"})
+            warn_if_set("Mesh", entry, "Mesh/Source = gmsh");
+      }
+    if (mesh.local_refinements == 0)
+      warn_if_set("Mesh", "Local refinement box", "Mesh/Local refinements = 0");
+    if (mesh.distortion == 0)
+      for (const std::string entry : {"Distortion type", "Random seed"})
+        warn_if_set("Mesh", entry, "Mesh/Distortion = 0");
+    // Entries of the model that this scene leaves without an object (those
+    // of other models are warned about above).
+    if (fractures.geometries.empty() && fractures.gmsh_physical_tags.empty())
+      {
+        if (model == "elasticity" || model == "contact mechanics")
+          warn_if_set("Fractures", "Pressure", "a scene without fractures");
+        if (model == "elasticity")
+          warn_if_set("Fractures", "Traction", "a scene without fractures");
+      }
+    if (model == "flow" || model == "poromechanics")
+      {
+        if (flow.pressure_ids.empty())
+          warn_if_set("Flow",
+                      "Pressure boundary expression",
+                      "a scene without Flow/Pressure boundary ids");
+        if (flow.flux_ids.empty())
+          warn_if_set("Flow",
+                      "Flux boundary expression",
+                      "a scene without Flow/Flux boundary ids");
+      }
+    if (model != "flow" && boundary.neumann_ids.empty())
+      warn_if_set("Boundary conditions",
+                  "Neumann traction",
+                  "a scene without Boundary conditions/Neumann boundary ids");
+    if (exact.analytic_solution == "none")
+      warn_if_set("Exact solution",
+                  "Analytic load",
+                  "Exact solution/Analytic solution = none");
     if (model == "flow")
       {
         // The mechanics, which Model = flow does not solve.
@@ -2074,6 +2222,9 @@ namespace PolyFrac
           warn_if_set("Nonlinear solver", entry);
         warn_if_set("Flow", "Pressure stabilisation");
         warn_if_set("Flow", "Face bubbles");
+        // No volume coupling: the storage is Inverse Biot modulus alone.
+        warn_if_set("Flow", "Biot coefficient");
+        warn_if_set("Flow", "Initial porosity");
         // The flow AMG keeps ML's smoother; there is no contact Newton.
         warn_if_set("Linear solver", "Smoother sweeps");
         warn_if_set("Nonlinear solver", "Forcing term");

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -43,16 +44,19 @@ namespace PolyFrac
 
     // β_σ: scale-aware (2μ + λ)/h_σ unless given; the Tresca threshold at
     // the face centroid.
-    const auto g = make_expression<dim>("Contact/Tresca threshold",
+    const auto g         = make_expression<dim>("Contact/Tresca threshold",
                                         prm.contact.tresca_threshold,
                                         1,
                                         prm.constants);
+    double     scale_min = std::numeric_limits<double>::max(), scale_max = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
       {
-        const auto &face = geometry.faces[network.fracture_faces[i].face];
-        beta.push_back(prm.contact.beta > 0 ?
-                         prm.contact.beta :
-                         (2 * prm.lame_mu + prm.lame_lambda) / face.diameter);
+        const auto  &face = geometry.faces[network.fracture_faces[i].face];
+        const double scale_aware =
+          (2 * prm.lame_mu + prm.lame_lambda) / face.diameter;
+        scale_min = std::min(scale_min, scale_aware);
+        scale_max = std::max(scale_max, scale_aware);
+        beta.push_back(prm.contact.beta > 0 ? prm.contact.beta : scale_aware);
         threshold.push_back(friction_law == "Tresca" ? g->value(face.centroid) :
                                                        0.);
         if (threshold.back() < 0)
@@ -66,6 +70,26 @@ namespace PolyFrac
                                    ") at the fracture face centred at " +
                                    where.str() + "."));
           }
+      }
+    // The solution does not depend on β, but the contact states are decided
+    // by the sign of λ_n + β [[u]]_n: a β so large that β times the
+    // round-off of the jump outweighs λ_n (or so small that the jump never
+    // counts) makes them follow round-off.
+    constexpr double beta_range = 1e8;
+    if (prm.contact.beta > 0 && (prm.contact.beta > beta_range * scale_max ||
+                                 prm.contact.beta < scale_min / beta_range))
+      {
+        std::ostringstream message;
+        message << "In <" << prm.file_name
+                << ">: Contact/Complementarity parameter = " << prm.contact.beta
+                << " is out of range: it must lie within a factor 1e8 of the "
+                   "scale-aware (2 mu + lambda)/h_sigma, which is "
+                << scale_min << " to " << scale_max
+                << " on this mesh, i.e. in [" << scale_min / beta_range << ", "
+                << beta_range * scale_max
+                << "]; beyond it the contact states follow the round-off of "
+                   "the jumps. Use auto unless you have a reason not to.";
+        AssertThrow(false, ExcMessage(message.str()));
       }
 
     make_dirichlet_values();

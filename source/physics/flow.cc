@@ -103,7 +103,22 @@ namespace PolyFrac
                  << "; a permeability must be >= 0.";
             AssertThrow(false, ExcMessage(what.str()));
           }
-        cell_mobility.push_back(k / prm.flow.viscosity);
+        const double mobility = k / prm.flow.viscosity;
+        if (k > 0 && !std::isnormal(mobility))
+          {
+            // A denormal or infinite k/η has lost its digits, and the flow
+            // matrix is singular or infinite.
+            std::ostringstream what;
+            what << "In <" << prm.file_name << ">: Flow/Permeability = " << k
+                 << " at the point " << x
+                 << " with Flow/Viscosity = " << prm.flow.viscosity
+                 << " gives the mobility k/viscosity = " << mobility
+                 << ", beyond the range of double precision: give the "
+                    "permeability in m^2 (about 1e-20 to 1e-10) and the "
+                    "viscosity in Pa s (1e-3 for water).";
+            AssertThrow(false, ExcMessage(what.str()));
+          }
+        cell_mobility.push_back(mobility);
         cell_matrices.push_back(cell_hfv_matrix(geometry, c, alpha));
       }
     const double fracture_alpha =

@@ -584,10 +584,204 @@ CASES = {
          "lambda > -2 mu/d = -1.000000"],
         files={"scene.prm": section("Material", Lame_lambda="-1",
                                     Lame_mu="1")}),
+    "lame_lambda_beyond_round_off": case(
+        "`Lame lambda = 1e300`, `Lame mu = 1` (was exit 0: the shear "
+        "stiffness was lost in round-off)",
+        ["<Lame lambda> = 1e+300 is more than 1e12 times <Lame mu> = 1",
+         "lost in the round-off"],
+        files={"scene.prm": section("Material", Lame_lambda="1e300",
+                                    Lame_mu="1")}),
     "lame_lambda_negative_admissible": case(
         "`Lame lambda = -0.5`, `Lame mu = 1` in 2D: right, runs",
         [], files={"scene.prm": section("Material", Lame_lambda="-0.5",
                                         Lame_mu="1")}, status=0),
+    "complementarity_parameter_beyond_round_off": case(
+        "`Complementarity parameter = 1e300` (was exit 0: the contact states "
+        "followed round-off, the compressed fracture came out open, and -nan "
+        "in a Newton line)",
+        ["Contact/Complementarity parameter = 1e+300 is out of range",
+         "within a factor 1e8 of the scale-aware (2 mu + lambda)/h_sigma",
+         "Use auto"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Complementarity_parameter="1e300")},
+        stage="level", absent=["nan"]),
+    "complementarity_parameter_beneath_round_off": case(
+        "`Complementarity parameter = 1e-300`",
+        ["Contact/Complementarity parameter = 1e-300 is out of range"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Complementarity_parameter="1e-300")},
+        stage="level"),
+    "tresca_threshold_under_coulomb": case(
+        "`Tresca threshold = -1` under `Friction law = Coulomb`: a warning "
+        "(was silently ignored), runs",
+        ["Warning: Contact/Tresca threshold is not used by Contact/Friction "
+         "law = Coulomb and is ignored"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Coulomb", Tresca_threshold="-1")},
+        status=0),
+    "friction_coefficient_under_tresca": case(
+        "`Friction coefficient = 0.6` under `Friction law = Tresca`: a "
+        "warning, runs",
+        ["Warning: Contact/Friction coefficient is not used by "
+         "Contact/Friction law = Tresca and is ignored"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Tresca", Tresca_threshold="1",
+            Friction_coefficient="0.6")},
+        status=0),
+    "linear_solver_tolerance_zero": case(
+        "`Linear solver/Tolerance = 0` (was accepted: an iterative solve "
+        "can never reach it)",
+        ["subsection <Linear solver>: <Tolerance> = 0 must be in (0, 1)"],
+        files={"scene.prm": section("Linear solver", Tolerance="0")}),
+    "nonlinear_tolerance_one": case(
+        "`Nonlinear solver/Tolerance = 1` (was accepted: one Newton step "
+        "passes)",
+        ["subsection <Nonlinear solver>: <Tolerance> = 1 must be in (0, 1)"],
+        files={"scene.prm": section("Nonlinear solver", Tolerance="1")}),
+    "forcing_term_one": case(
+        "`Forcing term = 1` (was accepted: the Krylov solve of a Newton step "
+        "could stop at once)",
+        ["subsection <Nonlinear solver>: <Forcing term> = 1 must be in [0, 1)"],
+        files={"scene.prm": section("Nonlinear solver", Forcing_term="1")}),
+    "mobility_beyond_double": case(
+        "`Permeability = 1e-306`, `Viscosity = 1e3` under `Model = "
+        "poromechanics` (k/viscosity = 1e-309, a denormal)",
+        ["Flow/Permeability = 1e-306", "with Flow/Viscosity = 1000",
+         "beyond the range of double precision"],
+        files={"scene.prm": section("Model", Model="poromechanics") + SEGMENT
+               + section("Boundary conditions",
+                         Dirichlet_boundary_ids="0, 1, 2, 3")
+               + section("Flow", Permeability="1e-306", Viscosity="1e3")
+               + section("Time", End_time="0.1", Time_step="0.1")},
+        stage="level", absent=["Stacktrace"]),
+    "viscosity_beyond_double": case(
+        "`Viscosity = 1e300` (was \"the poromechanical system is singular\" "
+        "with a deal.II stack trace in the message)",
+        ["<Minimum fracture aperture> = 1e-5 with <Viscosity> = 1e300",
+         "not a positive double"],
+        files={"scene.prm": section("Flow", Viscosity="1e300")}),
+    "fracture_aperture_beyond_double": case(
+        "`Fracture aperture at contact = 1e300` (was: \"the poromechanical "
+        "system is singular\" with a deal.II stack trace in the message)",
+        ["<Fracture aperture at contact> = 1e300 with <Viscosity> = 1e-3",
+         "cubic-law conductivity", "not a positive double"],
+        files={"scene.prm": section("Flow", Fracture_aperture_at_contact="1e300")},
+        absent=["Stacktrace", "An error occurred"]),
+    "minimum_aperture_beneath_double": case(
+        "`Minimum fracture aperture = 1e-300` with `Fracture aperture at "
+        "contact = 0`: d^3 underflows to 0",
+        ["<Minimum fracture aperture> = 1e-300", "= 0, which is not a "
+         "positive double"],
+        files={"scene.prm": section("Flow", Fracture_aperture_at_contact="0",
+                                    Minimum_fracture_aperture="1e-300")}),
+    "hfv_stabilisation_huge": case(
+        "`HFV stabilisation = 1e300` (was: a singular poromechanical system "
+        "with a deal.II stack trace in the message)",
+        ["<HFV stabilisation> must be auto or a number in [1e-6, 1e6]"],
+        files={"scene.prm": section("Flow", HFV_stabilisation="1e300")}),
+    "mesh_file_without_gmsh_source": case(
+        "`Mesh/File name = box.geo` without `Source = gmsh` (was silently "
+        "ignored: the run meshed the default box)",
+        ["subsection <Mesh>: <File name> = box.geo is read only with <Source "
+         "= gmsh>, but Source is hyper rectangle"],
+        files={"scene.prm": section("Mesh", File_name="box.geo"),
+               "box.geo": BOX_GEO}),
+    "subdivisions_with_gmsh_source": case(
+        "`Subdivisions = 4, 4` and `Cell type = simplex` with `Source = gmsh`: "
+        "warnings, runs",
+        ["Warning: Mesh/Subdivisions is not used by Mesh/Source = gmsh",
+         "Warning: Mesh/Cell type is not used by Mesh/Source = gmsh"],
+        files={"scene.prm": section(
+            "Mesh", Source="gmsh", File_name="box.geo",
+            Cell_type="simplex") + section(
+            "Boundary conditions", Dirichlet_boundary_ids="1"),
+            "box.geo": BOX_GEO},
+        status=0),
+    "local_refinement_box_not_finite": case(
+        "`Local refinement box = nan, 0 : 0.5, 0.5` (was accepted)",
+        ["subsection <Mesh> <Local refinement box>: <nan> is not a finite "
+         "number"],
+        files={"scene.prm": section("Mesh", Local_refinement_box="nan, 0 : "
+                                    "0.5, 0.5", Local_refinements="1")}),
+    "local_refinement_box_inverted": case(
+        "`Local refinement box = 0.5, 0.5 : -0.5, -0.5` (was accepted: "
+        "nothing refined)",
+        ["its lower corner lies above its upper one in direction 0"],
+        files={"scene.prm": section("Mesh", Local_refinement_box="0.5, 0.5 : "
+                                    "-0.5, -0.5", Local_refinements="1")}),
+    "local_refinement_box_without_refinements": case(
+        "`Local refinement box` set with `Local refinements = 0`: a "
+        "warning, runs",
+        ["Warning: Mesh/Local refinement box is not used by Mesh/Local "
+         "refinements = 0"],
+        files={"scene.prm": section("Mesh", Local_refinement_box="0, 0 : "
+                                    "0.5, 0.5")}, status=0),
+    "segment_not_finite": case(
+        "`Segments = nan, 0 : 0.5, 0` (was refused as a segment of length 0, "
+        "not naming the entry)",
+        ["subsection <Fractures> <Segments>: <nan> is not a finite number"],
+        files={"scene.prm": section("Fractures",
+                                    Segments="nan, 0 : 0.5, 0")}),
+    "segment_of_length_zero": case(
+        "`Segments = 0, 0 : 0, 0` (was \"A fracture segment has length 0\", "
+        "not naming the entry)",
+        ["subsection <Fractures> <Segments>: segment 0 has length 0"],
+        files={"scene.prm": section("Fractures", Segments="0, 0 : 0, 0")}),
+    "output_directory_empty": case(
+        "`Output directory =` (empty; was a raw filesystem error)",
+        ["Output/Output directory is empty: name a directory"],
+        files={"scene.prm": section("Output", Output_directory="")},
+        absent=["filesystem error"]),
+    "box_beyond_double": case(
+        "`Upper right corner = 1e300, 1e300` (was \"cell 0 has measure inf: "
+        "it is degenerate\", not naming the entry)",
+        ["<Upper right corner> = 1e300, 1e300 has measure inf",
+         "beyond the range of double precision"],
+        files={"scene.prm": section("Mesh",
+                                    Upper_right_corner="1e300, 1e300")}),
+    "flux_expression_without_ids": case(
+        "`Flux boundary expression = 1/0` under `Model = flow` without flux "
+        "ids: a warning (was silently ignored), runs",
+        ["Warning: Flow/Flux boundary expression is not used by a scene "
+         "without Flow/Flux boundary ids"],
+        files={"scene.prm": FLOW + section(
+            "Flow", Pressure_boundary_ids="0", Flux_boundary_expression="1/0")
+            + section("Time", End_time="0.1", Time_step="0.1")},
+        status=0),
+    "biot_coefficient_under_flow": case(
+        "`Biot coefficient = 0.8` and `Initial porosity = 0.3` under `Model "
+        "= flow`: warnings (were silently ignored), runs",
+        ["Warning: Flow/Biot coefficient is not used by Model = flow",
+         "Warning: Flow/Initial porosity is not used by Model = flow"],
+        files={"scene.prm": FLOW + section(
+            "Flow", Pressure_boundary_ids="0", Biot_coefficient="0.8",
+            Initial_porosity="0.3")
+            + section("Time", End_time="0.1", Time_step="0.1")},
+        status=0),
+    "random_seed_without_distortion": case(
+        "`Random seed = 3` with `Distortion = 0`: a warning, runs",
+        ["Warning: Mesh/Random seed is not used by Mesh/Distortion = 0"],
+        files={"scene.prm": section("Mesh", Random_seed="3")}, status=0),
+    "neumann_traction_without_ids": case(
+        "`Neumann traction = 0; -1` with no Neumann boundary ids: a warning "
+        "(was silently ignored), runs",
+        ["Warning: Boundary conditions/Neumann traction is not used by a "
+         "scene without Boundary conditions/Neumann boundary ids"],
+        files={"scene.prm": section("Boundary conditions",
+                                    Neumann_traction="0; -1")}, status=0),
+    "fracture_pressure_without_fractures": case(
+        "`Fractures/Pressure = 1` in a scene without fractures: a warning "
+        "(was silently ignored), runs",
+        ["Warning: Fractures/Pressure is not used by a scene without "
+         "fractures"],
+        files={"scene.prm": section("Fractures", Pressure="1")}, status=0),
+    "analytic_load_without_solution": case(
+        "`Exact solution/Analytic load = 5` without an analytic solution: a "
+        "warning (was silently ignored), runs",
+        ["Warning: Exact solution/Analytic load is not used by Exact "
+         "solution/Analytic solution = none"],
+        files={"scene.prm": section("Exact solution", Analytic_load="5")},
+        status=0),
     "smoother_sweeps_with_direct": case(
         "`Smoother sweeps = 2` with `Method = direct`: a warning, runs",
         ["Linear solver/Smoother sweeps is not used by Linear solver/Method "
