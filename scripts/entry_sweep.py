@@ -111,8 +111,8 @@ EXTRA_BOUNDS = {
     "Nonlinear solver/Forcing term": (0.0, False, None, None),
     "Mesh/Refined fraction": (0.0, True, 1.0, False),
     "Mesh/Distortion": (0.0, False, None, None),
-    # lambda > -2 mu/d with the base scenes' mu = 1, d = 2.
-    "Material/Lame lambda": (-1.0, True, None, None),
+    # lambda > -2 mu/d with the base scenes' mu = 1e10 (the default), d = 2.
+    "Material/Lame lambda": (-1e10, True, None, None),
     "Linear solver/Maximum iterations": (1.0, False, None, None),
     "Nonlinear solver/Maximum iterations": (1.0, False, None, None),
     "Nonlinear solver/Maximum coupling iterations": (1.0, False, None, None),

@@ -375,7 +375,7 @@ namespace Step2
                                             1,
                                             prm.constants))
   {
-    AssertThrow(prm.contact.friction_law != "Coulomb" ||
+    AssertThrow(prm.contact.friction_law != FrictionLaw::coulomb ||
                   prm.contact.n_load_steps == 1,
                 ExcMessage("step-2 checks Coulomb friction with a single load "
                            "step only (Contact/Number of load steps = 1): "
@@ -403,7 +403,7 @@ namespace Step2
     const FaceGeometry<dim> &face =
       geometry.faces[network.fracture_faces[i].face];
     const Tensor<2, dim> Q   = network.frame(i);
-    const std::string   &law = prm.contact.friction_law;
+    const FrictionLaw    law = prm.contact.friction_law;
 
     FaceConditions<dim> c;
     c.lambda = Q * state.multipliers[i];
@@ -418,9 +418,9 @@ namespace Step2
       c.b_t[d] = c.lambda[d] + c.beta * c.jump[d];
     const double b_t_norm = c.b_t.norm();
 
-    if (law == "Tresca")
+    if (law == FrictionLaw::tresca)
       c.g = tresca_threshold->value(face.centroid);
-    else if (law == "Coulomb")
+    else if (law == FrictionLaw::coulomb)
       c.g = prm.contact.friction_coefficient * std::max(c.b_n, 0.);
     else
       c.g = 0;
@@ -430,8 +430,8 @@ namespace Step2
     c.residual[0] = c.lambda[0] - std::max(c.b_n, 0.);
 
     // The tangential projection onto the disc B(0, g).
-    if (law == "frictionless" ||
-        (law == "Coulomb" && c.normal == NormalState::open))
+    if (law == FrictionLaw::frictionless ||
+        (law == FrictionLaw::coulomb && c.normal == NormalState::open))
       c.tangential = TangentialState::free;
     else
       c.tangential =
@@ -485,7 +485,8 @@ namespace Step2
     // slip increment; a slip face then sits exactly on the border |b_τ| =
     // g, and its reported tangential state is decided by round-off. So for
     // Coulomb we compare the normal states only.
-    const bool   compare_tangential = prm.contact.friction_law != "Coulomb";
+    const bool compare_tangential =
+      prm.contact.friction_law != FrictionLaw::coulomb;
     unsigned int n_open = 0, n_contact = 0, n_stick = 0, n_slip = 0, n_free = 0,
                  n_disagree = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
@@ -769,8 +770,8 @@ namespace Step2
     AssertThrow(prm.model == "contact mechanics",
                 ExcMessage("step-2 solves Model = contact mechanics; for "
                            "Model = elasticity see step-1."));
-    out << "Friction law: " << prm.contact.friction_law;
-    if (prm.contact.friction_law == "Coulomb")
+    out << "Friction law: " << selection_name(prm.contact.friction_law);
+    if (prm.contact.friction_law == FrictionLaw::coulomb)
       out << " (F = " << prm.contact.friction_coefficient << ")";
     out << (prm.contact.bubbles ? "" : ", without bubbles") << std::endl
         << std::endl;

@@ -71,7 +71,7 @@ namespace PolyFrac
     const FlowStepData   data       = flow.flow_step_data(t_new, t_new - t_old);
     const Vector<double> previous   = pressure;
     const unsigned int   iterations = flow.solve_step(data, previous, pressure);
-    if (prm.solver.method == "AMG")
+    if (prm.solver.method == SolverMethod::amg)
       out << "CG iterations: " << iterations << std::endl;
     // The largest residual of a cell or fracture face balance relative to
     // its largest term: round-off with UMFPACK, about the CG tolerance with

@@ -78,7 +78,7 @@ namespace PolyFrac
   {
     // The fractures are either planar Fracture objects located
     // geometrically (generated box) or the tagged elements of a gmsh mesh.
-    if (prm.mesh.source == "gmsh")
+    if (prm.mesh.source == MeshSource::gmsh)
       {
         AssertThrow(prm.fractures.geometries.empty(),
                     ExcMessage(

@@ -40,7 +40,7 @@ namespace PolyFrac
   ElasticityModel<dim>::step(const double, const double, std::ostream &out)
   {
     const unsigned int iterations = elasticity.solve(state);
-    if (prm.solver.method == "AMG")
+    if (prm.solver.method == SolverMethod::amg)
       out << "CG iterations: " << iterations << std::endl;
     return StepReport();
   }
@@ -112,7 +112,7 @@ namespace PolyFrac
   void
   ContactMechanicsModel<dim>::start_from(const LevelStart &coarser)
   {
-    if (prm.nonlinear.initial_guess == "previous level")
+    if (prm.nonlinear.initial_guess == InitialGuess::previous_level)
       contact.start_from(
         dynamic_cast<const ContactLevelStart<dim> &>(coarser).field);
   }

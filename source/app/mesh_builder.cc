@@ -152,7 +152,7 @@ namespace PolyFrac
           subdivisions[d] = prm.mesh.subdivisions[d];
         }
       const unsigned int n_refinements = prm.mesh.global_refinements + level;
-      if (prm.mesh.cell_type == "simplex")
+      if (prm.mesh.cell_type == CellType::simplex)
         {
           // Simplex meshes cannot be refined by deal.II 9.4 without a
           // hypercube parent: subdivide instead.
@@ -280,7 +280,7 @@ namespace PolyFrac
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           Tensor<1, dim> shift;
-          if (prm.mesh.distortion_type == "random")
+          if (prm.mesh.distortion_type == DistortionType::random)
             for (unsigned int d = 0; d < dim; ++d)
               shift[d] = D * h[v] * uniform(generator);
           else

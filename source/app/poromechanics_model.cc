@@ -111,7 +111,7 @@ namespace PolyFrac
     for (unsigned int i = 0; i < discretization.network->n_fracture_faces();
          ++i)
       state.multipliers.push_back(elasticity.in_situ_traction(i));
-    if (prm.exact.analytic_solution != "none")
+    if (prm.exact.analytic_solution != AnalyticSolution::none)
       use_analytic_solution();
     elasticity.set_time(0);
     elasticity.assemble();
@@ -185,7 +185,7 @@ namespace PolyFrac
     // (doc/scheme.md §10).
     return scheme == Scheme::monolithic ||
            (scheme == Scheme::automatic && obstacle.empty() &&
-            (!fractured || prm.solver.method == "direct"));
+            (!fractured || prm.solver.method == SolverMethod::direct));
   }
 
 
@@ -236,7 +236,7 @@ namespace PolyFrac
             std::abs((*high)[d] - upper) <= tolerance,
           ExcMessage(
             "In <" + prm.file_name + ">: Exact solution/Analytic solution = " +
-            prm.exact.analytic_solution +
+            selection_name(prm.exact.analytic_solution) +
             " lives on the box of Mesh/Lower left corner and Upper "
             "right corner, but the mesh spans [" +
             std::to_string((*low)[d]) + ", " + std::to_string((*high)[d]) +
@@ -527,7 +527,8 @@ namespace PolyFrac
   PoromechanicsModel<dim>::start_in_equilibrium(std::ostream &out)
   {
     // An analytic solution's initial state is its own.
-    if (!prm.time.equilibrium_start || prm.exact.analytic_solution != "none")
+    if (!prm.time.equilibrium_start ||
+        prm.exact.analytic_solution != AnalyticSolution::none)
       return std::nullopt;
     elasticity.set_time(0);
     if (newton)

@@ -116,11 +116,13 @@ namespace PolyFrac
   namespace
   {
     DataOutBase::VtkFlags::ZlibCompressionLevel
-    compression_level(const std::string &name)
+    compression_level(const VtuCompression compression)
     {
-      return name == "best" ? DataOutBase::VtkFlags::best_compression :
-             name == "fast" ? DataOutBase::VtkFlags::best_speed :
-                              DataOutBase::VtkFlags::no_compression;
+      return compression == VtuCompression::best ?
+               DataOutBase::VtkFlags::best_compression :
+             compression == VtuCompression::fast ?
+               DataOutBase::VtkFlags::best_speed :
+               DataOutBase::VtkFlags::no_compression;
     }
 
     /** Writes or reads @p value with the boost @p archive. */
@@ -545,7 +547,7 @@ namespace PolyFrac
       return;
     const std::string where = "In <" + prm.file_name + ">, run on " +
                               std::to_string(n_ranks) + " MPI ranks: ";
-    AssertThrow(prm.mesh.refinement != "adaptive",
+    AssertThrow(prm.mesh.refinement != MeshRefinement::adaptive,
                 ExcMessage(where + "Mesh/Refinement = adaptive runs on one "
                                    "rank only so far. Run it without mpirun, "
                                    "or use Mesh/Refinement = uniform."));
@@ -606,7 +608,7 @@ namespace PolyFrac
     // Only an adaptive cycle refines the triangulation again: otherwise it
     // goes before the model is built (0.17 KB per unknown at the 3D peak,
     // benchmarks/README.md, "Memory budget").
-    if (prm.mesh.refinement != "adaptive")
+    if (prm.mesh.refinement != MeshRefinement::adaptive)
       discretization_pointer->triangulation.clear();
     const LevelDiscretization<dim> &discretization = *discretization_pointer;
     coarser_discretization.reset();
@@ -661,7 +663,7 @@ namespace PolyFrac
     for (const std::string &name : output.file_names())
       written_files.push_back(name);
 
-    if (prm.mesh.refinement == "adaptive" &&
+    if (prm.mesh.refinement == MeshRefinement::adaptive &&
         level + 1 < prm.n_refinement_levels)
       {
         TimerOutput::Scope section(timer, "error indicators");

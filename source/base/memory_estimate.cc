@@ -52,13 +52,13 @@ namespace PolyFrac
   double
   estimated_n_cells(const Parameters &prm)
   {
-    if (prm.mesh.source != "hyper rectangle")
+    if (prm.mesh.source != MeshSource::hyper_rectangle)
       return 0;
     const unsigned int dim = prm.dim;
     // An adaptive cycle refines the Refined fraction of the cells (and a
     // few more, to keep one hanging node per face) into 2^dim children: a
     // lower bound.
-    const bool   adaptive    = prm.mesh.refinement == "adaptive";
+    const bool   adaptive    = prm.mesh.refinement == MeshRefinement::adaptive;
     const double refinements = prm.mesh.global_refinements +
                                (adaptive ? 0 : prm.n_refinement_levels - 1);
     double n_cells = std::pow(2., dim * refinements);
@@ -68,7 +68,7 @@ namespace PolyFrac
                  prm.n_refinement_levels - 1.);
     for (unsigned int d = 0; d < dim; ++d)
       n_cells *= prm.mesh.subdivisions[d];
-    if (prm.mesh.cell_type == "simplex")
+    if (prm.mesh.cell_type == CellType::simplex)
       n_cells *= (dim == 2 ? 2 : 5);
     // The part of the domain in the local refinement box gains 2^dim
     // children per cell and refinement.
@@ -117,8 +117,8 @@ namespace PolyFrac
     // as the cells (a box of hexahedra; more cells than nodes otherwise).
     const double one_rank =
       n_cells *
-      bytes_per_cell[prm.dim - 2]
-                    [prm.solver.method_for(prm.dim, n_cells) == "direct"];
+      bytes_per_cell[prm.dim - 2][prm.solver.method_for(prm.dim, n_cells) ==
+                                  SolverMethod::direct];
     return one_rank * (replicated_fraction * n_ranks_on_node +
                        (1 - replicated_fraction) * n_ranks_on_node / n_ranks);
   }
@@ -155,7 +155,7 @@ namespace PolyFrac
               << " ranks on this machine (each holds the whole mesh)";
     message << ", more than the " << have / 1e9
             << " GB of memory of this machine. Lower "
-            << (prm.mesh.source == "gmsh" ?
+            << (prm.mesh.source == MeshSource::gmsh ?
                   "Mesh/Global refinements or coarsen the gmsh mesh <" +
                     prm.mesh.file_name + "> (larger characteristic lengths)" :
                   std::string("Mesh/Subdivisions, Mesh/Global refinements, "

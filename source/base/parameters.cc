@@ -413,11 +413,11 @@ namespace PolyFrac
     prm.enter_subsection("Mesh");
     prm.declare_entry("Source",
                       "hyper rectangle",
-                      Patterns::Selection("hyper rectangle|gmsh"),
+                      Patterns::Selection(selection_pattern<MeshSource>()),
                       "Where the deal.II triangulation comes from.");
     prm.declare_entry("Cell type",
                       "hypercube",
-                      Patterns::Selection("hypercube|simplex"),
+                      Patterns::Selection(selection_pattern<CellType>()),
                       "Cells of a generated mesh: quadrilaterals/hexahedra or "
                       "triangles/tetrahedra.");
     prm.declare_entry("Lower left corner",
@@ -460,7 +460,7 @@ namespace PolyFrac
     prm.declare_entry(
       "Refinement",
       "uniform",
-      Patterns::Selection("uniform|adaptive"),
+      Patterns::Selection(selection_pattern<MeshRefinement>()),
       "How level k > 0 of Convergence study/Number of refinement levels is "
       "made. uniform: the base mesh refined k more times (box meshes by "
       "deal.II, gmsh meshes by gmsh), then the local refinement box. "
@@ -485,7 +485,7 @@ namespace PolyFrac
     prm.declare_entry(
       "Distortion type",
       "random",
-      Patterns::Selection("random|smooth"),
+      Patterns::Selection(selection_pattern<DistortionType>()),
       "random: independent perturbation of each vertex. smooth: "
       "a sine map (Kershaw-like) that bends faces; within 1/4 of the "
       "shortest side of the box it turns tangent to the fractures and "
@@ -633,7 +633,7 @@ namespace PolyFrac
     prm.declare_entry(
       "Analytic solution",
       "none",
-      Patterns::Selection("none|terzaghi|mandel"),
+      Patterns::Selection(selection_pattern<AnalyticSolution>()),
       "A built-in poroelastic solution (Model = poromechanics, on the box "
       "of Mesh/Lower left and Upper right corner), the exact solution and "
       "the Dirichlet data on the Dirichlet ids. terzaghi: the column along "
@@ -683,7 +683,7 @@ namespace PolyFrac
     prm.declare_entry(
       "Friction law",
       "Coulomb",
-      Patterns::Selection("frictionless|Tresca|Coulomb"),
+      Patterns::Selection(selection_pattern<FrictionLaw>()),
       "Friction on the fracture faces in contact. Tresca: the "
       "threshold below, normal and tangential states "
       "independent. Coulomb: quasi-static, threshold F lambda_n, "
@@ -860,7 +860,7 @@ namespace PolyFrac
     prm.declare_entry(
       "Initial guess",
       "previous level",
-      Patterns::Selection("previous level|zero"),
+      Patterns::Selection(selection_pattern<InitialGuess>()),
       "previous level: on levels after the first, with one load step, "
       "Newton starts with one primal-dual active set step on the contact "
       "states of the previous level (those of the nearest face centroid on "
@@ -919,7 +919,8 @@ namespace PolyFrac
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
                       "automatic",
-                      Patterns::Selection("automatic|direct|AMG"),
+                      Patterns::Selection("automatic|" +
+                                          selection_pattern<SolverMethod>()),
                       "automatic: direct for a level of at most 100,000 "
                       "node sides (nodal unknowns over the dimension) in 2D "
                       "or 2,000 in 3D, AMG above (measured on elasticity, "
@@ -967,7 +968,7 @@ namespace PolyFrac
     prm.declare_entry(
       "VTU compression",
       "best",
-      Patterns::Selection("best|fast|none"),
+      Patterns::Selection(selection_pattern<VtuCompression>()),
       "zlib compression of the VTU data: best (smallest files), fast "
       "(quicker to write, larger), none. deal.II 9.4 writes the data "
       "base64-encoded in every case: there is no ASCII VTU.");
@@ -1193,8 +1194,8 @@ namespace PolyFrac
 
     const std::string where = "In <" + file_name + ">, subsection <Mesh>";
     prm->enter_subsection("Mesh");
-    mesh.source    = prm->get("Source");
-    mesh.cell_type = prm->get("Cell type");
+    mesh.source    = parse_selection<MeshSource>(prm->get("Source"));
+    mesh.cell_type = parse_selection<CellType>(prm->get("Cell type"));
     mesh.lower_left =
       parse_point(prm->get("Lower left corner"), dim, where + " <Lower left>");
     mesh.upper_right = parse_point(prm->get("Upper right corner"),
@@ -1243,15 +1244,16 @@ namespace PolyFrac
                                std::to_string(d) +
                                "; give <lower corner : upper corner>."));
     }
-    mesh.refinement       = prm->get("Refinement");
+    mesh.refinement = parse_selection<MeshRefinement>(prm->get("Refinement"));
     mesh.refined_fraction = prm->get_double("Refined fraction");
-    AssertThrow(mesh.refinement == "uniform" || mesh.refined_fraction > 0,
+    AssertThrow(mesh.refinement == MeshRefinement::uniform ||
+                  mesh.refined_fraction > 0,
                 ExcMessage(where + ": <Refinement = adaptive> needs <Refined "
                                    "fraction> > 0 (0.3 refines the 30 % of "
                                    "the cells with the largest error "
                                    "indicators)."));
-    AssertThrow(mesh.refinement == "uniform" || model == "elasticity" ||
-                  model == "contact mechanics",
+    AssertThrow(mesh.refinement == MeshRefinement::uniform ||
+                  model == "elasticity" || model == "contact mechanics",
                 ExcMessage(where +
                            ": <Refinement = adaptive> needs an a "
                            "posteriori error indicator, which only "
@@ -1261,19 +1263,20 @@ namespace PolyFrac
     mesh.local_refinements    = prm->get_integer("Local refinements");
     mesh.fracture_refinements = prm->get_integer("Fracture refinements");
     mesh.distortion           = prm->get_double("Distortion");
-    mesh.distortion_type      = prm->get("Distortion type");
-    mesh.random_seed          = prm->get_integer("Random seed");
-    mesh.cells_per_polytope   = prm->get_integer("Cells per polytope");
-    mesh.file_name            = prm->get("File name");
+    mesh.distortion_type =
+      parse_selection<DistortionType>(prm->get("Distortion type"));
+    mesh.random_seed        = prm->get_integer("Random seed");
+    mesh.cells_per_polytope = prm->get_integer("Cells per polytope");
+    mesh.file_name          = prm->get("File name");
     prm->leave_subsection();
-    AssertThrow(mesh.source == "gmsh" || mesh.file_name.empty(),
+    AssertThrow(mesh.source == MeshSource::gmsh || mesh.file_name.empty(),
                 ExcMessage(
                   where + ": <File name> = " + mesh.file_name +
                   " is read only with <Source = gmsh>, but Source is " +
-                  mesh.source +
+                  selection_name(mesh.source) +
                   ": set Source = gmsh to mesh from this file, or "
                   "remove File name to mesh the box."));
-    if (mesh.source == "gmsh")
+    if (mesh.source == MeshSource::gmsh)
       {
         AssertThrow(!mesh.file_name.empty(),
                     ExcMessage(where + ": <Source = gmsh> needs <File name>."));
@@ -1396,8 +1399,9 @@ namespace PolyFrac
                                   exact.contact_traction);
     exact.matrix_pressure   = prm->get("Matrix pressure");
     exact.fracture_pressure = prm->get("Fracture pressure");
-    exact.analytic_solution = prm->get("Analytic solution");
-    exact.analytic_load     = prm->get_double("Analytic load");
+    exact.analytic_solution =
+      parse_selection<AnalyticSolution>(prm->get("Analytic solution"));
+    exact.analytic_load = prm->get_double("Analytic load");
     prm->leave_subsection();
     check_analytic_solution();
 
@@ -1420,9 +1424,10 @@ namespace PolyFrac
             column.find("lambda") != std::string::npos ?
                                    exact.contact_traction :
                                    exact.displacement;
-          const bool analytic = exact.analytic_solution != "none" &&
-                                (column == "err_u" || column == "err_grad_u" ||
-                                 column == "err_pressure");
+          const bool analytic =
+            exact.analytic_solution != AnalyticSolution::none &&
+            (column == "err_u" || column == "err_grad_u" ||
+             column == "err_pressure");
           AssertThrow(!field.empty() || analytic,
                       ExcMessage("In <" + file_name + ">: Convergence study/" +
                                  entry + " checks " + column +
@@ -1438,7 +1443,8 @@ namespace PolyFrac
 
     prm->enter_subsection("Contact");
     const std::string cwhere = "In <" + file_name + ">, subsection <Contact>";
-    contact.friction_law     = prm->get("Friction law");
+    contact.friction_law =
+      parse_selection<FrictionLaw>(prm->get("Friction law"));
     contact.friction_coefficient = prm->get_double("Friction coefficient");
     AssertThrow(contact.friction_coefficient >= 0,
                 ExcMessage(cwhere +
@@ -1483,7 +1489,8 @@ namespace PolyFrac
                            prm->get("Tolerance") +
                            " must be in (0, 1): the residuals are relative, "
                            "and round-off keeps them above 0."));
-    nonlinear.initial_guess      = prm->get("Initial guess");
+    nonlinear.initial_guess =
+      parse_selection<InitialGuess>(prm->get("Initial guess"));
     nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
     AssertThrow(nonlinear.coupling_tolerance > 0 &&
                   nonlinear.coupling_tolerance <= 1e-4,
@@ -1520,7 +1527,9 @@ namespace PolyFrac
 
     prm->enter_subsection("Linear solver");
     solver.automatic = prm->get("Method") == "automatic";
-    solver.method    = solver.automatic ? "direct" : prm->get("Method");
+    solver.method    = solver.automatic ?
+                         SolverMethod::direct :
+                         parse_selection<SolverMethod>(prm->get("Method"));
     solver.tolerance = prm->get_double("Tolerance");
     AssertThrow(solver.tolerance > 0 && solver.tolerance < 1,
                 ExcMessage("In <" + file_name +
@@ -1541,8 +1550,9 @@ namespace PolyFrac
                            ">: Output/Output directory is empty: name a "
                            "directory, e.g. output."));
     prm->set("Output directory", absolute_path(output.directory));
-    output.write_vtu           = prm->get_bool("Write VTU");
-    output.vtu_compression     = prm->get("VTU compression");
+    output.write_vtu = prm->get_bool("Write VTU");
+    output.vtu_compression =
+      parse_selection<VtuCompression>(prm->get("VTU compression"));
     output.print_timings       = prm->get_bool("Print timings");
     output.checkpoint_interval = prm->get_integer("Checkpoint interval");
     prm->leave_subsection();
@@ -1564,7 +1574,7 @@ namespace PolyFrac
 
     warn_unused_entries();
     check_expressions();
-    if (exact.analytic_solution != "none")
+    if (exact.analytic_solution != AnalyticSolution::none)
       {
         if (dim == 2)
           check_analytic_loads<2>();
@@ -1802,24 +1812,18 @@ namespace PolyFrac
   void
   Parameters::check_analytic_solution() const
   {
-    const std::string &name = exact.analytic_solution;
-    if (name == "none")
+    if (exact.analytic_solution == AnalyticSolution::none)
       return;
+    const std::string name  = selection_name(exact.analytic_solution);
     const std::string where = "In <" + file_name +
                               ">, Exact solution/Analytic solution = " + name +
                               ": ";
     AssertThrow(model == "poromechanics",
                 ExcMessage(where + "a poroelastic solution needs Model/Model "
                                    "= poromechanics."));
-    AssertThrow(name != "mandel" || dim == 2,
+    AssertThrow(exact.analytic_solution != AnalyticSolution::mandel || dim == 2,
                 ExcMessage(where + "Mandel's problem is plane strain: set "
                                    "Dimension = 2."));
-    AssertThrow(mesh.source == "hyper rectangle" || mesh.source == "gmsh",
-                ExcMessage(where + "the solution lives on the box of "
-                                   "Mesh/Lower left corner and Upper right "
-                                   "corner: set Mesh/Source = hyper "
-                                   "rectangle, or gmsh with a mesh of that "
-                                   "box."));
     AssertThrow(exact.displacement.empty(),
                 ExcMessage(where + "it gives the exact displacement: leave "
                                    "Exact solution/Displacement empty."));
@@ -1828,25 +1832,27 @@ namespace PolyFrac
                 ExcMessage(where + "it gives the exact pressure: leave "
                                    "Exact solution/Matrix pressure and "
                                    "Fracture pressure empty."));
-    AssertThrow(fractures.geometries.empty() &&
-                  fractures.gmsh_physical_tags.empty(),
-                ExcMessage(where + "it is the solution of an unfractured " +
-                           (name == "terzaghi" ? std::string("column") :
-                                                 std::string("plate")) +
-                           ": remove the fractures (Fractures/" +
-                           (dim == 2 ? "Segments" : "Polygons") +
-                           ", Gmsh physical tags), or the analytic "
-                           "solution."));
+    AssertThrow(
+      fractures.geometries.empty() && fractures.gmsh_physical_tags.empty(),
+      ExcMessage(where + "it is the solution of an unfractured " +
+                 (exact.analytic_solution == AnalyticSolution::terzaghi ?
+                    std::string("column") :
+                    std::string("plate")) +
+                 ": remove the fractures (Fractures/" +
+                 (dim == 2 ? "Segments" : "Polygons") +
+                 ", Gmsh physical tags), or the analytic "
+                 "solution."));
     AssertThrow(exact.analytic_load != 0,
-                ExcMessage(where +
-                           "set Exact solution/Analytic load, the "
-                           "compressive load (" +
-                           (name == "terzaghi" ?
-                              std::string("Terzaghi: the traction q on the "
-                                          "top, in Pa") :
-                              std::string("Mandel: the force F per unit "
-                                          "length on the plate, in N/m")) +
-                           "), to a non-zero value."));
+                ExcMessage(
+                  where +
+                  "set Exact solution/Analytic load, the "
+                  "compressive load (" +
+                  (exact.analytic_solution == AnalyticSolution::terzaghi ?
+                     std::string("Terzaghi: the traction q on the "
+                                 "top, in Pa") :
+                     std::string("Mandel: the force F per unit "
+                                 "length on the plate, in N/m")) +
+                  "), to a non-zero value."));
   }
 
 
@@ -1942,9 +1948,9 @@ namespace PolyFrac
   void
   Parameters::check_analytic_loads() const
   {
-    const std::string where =
-      "In <" + file_name +
-      ">: Exact solution/Analytic solution = " + exact.analytic_solution + " ";
+    const std::string where = "In <" + file_name +
+                              ">: Exact solution/Analytic solution = " +
+                              selection_name(exact.analytic_solution) + " ";
     // The data at the corners, the face centres and the centre of the box
     // (3^dim points), at two times after t = 0.
     std::vector<Point<dim>> points;
@@ -2012,7 +2018,7 @@ namespace PolyFrac
     // Terzaghi's load q presses on the top (the largest last coordinate):
     // the traction there is (0, ..., −q) after t = 0; elsewhere, and for
     // Mandel (whose plate moves by Dirichlet data), it is 0.
-    const bool terzaghi = exact.analytic_solution == "terzaghi";
+    const bool terzaghi = exact.analytic_solution == AnalyticSolution::terzaghi;
     const auto on_top   = [&](const Point<dim> &x) {
       return x[dim - 1] == mesh.upper_right[dim - 1];
     };
@@ -2081,15 +2087,13 @@ namespace PolyFrac
     else
       {
         warn_if_set("Fractures", "Traction");
-        if (model != "flow" && contact.friction_law != "Tresca")
-          warn_if_set("Contact",
-                      "Tresca threshold",
-                      "Contact/Friction law = " + contact.friction_law);
-        if (model != "flow" && contact.friction_law != "Coulomb")
-          warn_if_set("Contact",
-                      "Friction coefficient",
-                      "Contact/Friction law = " + contact.friction_law);
-        if (!contact.bubbles && solver.method == "AMG")
+        const std::string law =
+          "Contact/Friction law = " + selection_name(contact.friction_law);
+        if (model != "flow" && contact.friction_law != FrictionLaw::tresca)
+          warn_if_set("Contact", "Tresca threshold", law);
+        if (model != "flow" && contact.friction_law != FrictionLaw::coulomb)
+          warn_if_set("Contact", "Friction coefficient", law);
+        if (!contact.bubbles && solver.method == SolverMethod::amg)
           warnings.push_back(
             "Linear solver/Method = AMG condenses the contact Newton steps "
             "through the bubbles; with Contact/Bubbles = false every step "
@@ -2136,11 +2140,11 @@ namespace PolyFrac
                   "a static Model = " + model + " (one step, no checkpoint)");
     if (model == "flow")
       warn_if_set("Time", "Equilibrium start");
-    if (exact.analytic_solution != "none")
+    if (exact.analytic_solution != AnalyticSolution::none)
       warn_if_set("Flow",
                   "Initial pressure",
                   "Exact solution/Analytic solution = " +
-                    exact.analytic_solution +
+                    selection_name(exact.analytic_solution) +
                     " (its state at t = 0 is the initial state)");
     if (model != "poromechanics")
       for (const std::string entry : {"Coupling tolerance",
@@ -2148,14 +2152,14 @@ namespace PolyFrac
                                       "Anderson depth",
                                       "Coupling scheme"})
         warn_if_set("Nonlinear solver", entry);
-    if (mesh.refinement == "uniform")
+    if (mesh.refinement == MeshRefinement::uniform)
       warn_if_set("Mesh", "Refined fraction", "Mesh/Refinement = uniform");
-    if (mesh.source == "gmsh")
+    if (mesh.source == MeshSource::gmsh)
       {
         for (const std::string entry : {"Cell type", "Subdivisions"})
           warn_if_set("Mesh", entry, "Mesh/Source = gmsh");
         // The corners also give the box of an analytic solution.
-        if (exact.analytic_solution == "none")
+        if (exact.analytic_solution == AnalyticSolution::none)
           for (const std::string entry :
                {"Lower left corner", "Upper right corner"})
             warn_if_set("Mesh", entry, "Mesh/Source = gmsh");
@@ -2189,7 +2193,7 @@ namespace PolyFrac
       warn_if_set("Boundary conditions",
                   "Neumann traction",
                   "a scene without Boundary conditions/Neumann boundary ids");
-    if (exact.analytic_solution == "none")
+    if (exact.analytic_solution == AnalyticSolution::none)
       warn_if_set("Exact solution",
                   "Analytic load",
                   "Exact solution/Analytic solution = none");
@@ -2229,7 +2233,7 @@ namespace PolyFrac
         warn_if_set("Linear solver", "Smoother sweeps");
         warn_if_set("Nonlinear solver", "Forcing term");
       }
-    else if (solver.method == "direct" && !solver.automatic)
+    else if (solver.method == SolverMethod::direct && !solver.automatic)
       {
         // The AMG's smoother and the condensed steps' Krylov stop.
         const std::string direct = "Linear solver/Method = direct";
@@ -2356,13 +2360,14 @@ namespace PolyFrac
   {
     return std::find(ids.begin(), ids.end(), id) != ids.end();
   }
-  std::string
+  SolverMethod
   Parameters::SolverData::method_for(const unsigned int dim,
                                      const double       n_nodes) const
   {
     if (!automatic)
       return method;
-    return n_nodes <= largest_direct_level[dim - 2] ? "direct" : "AMG";
+    return n_nodes <= largest_direct_level[dim - 2] ? SolverMethod::direct :
+                                                      SolverMethod::amg;
   }
 
 
@@ -2372,7 +2377,7 @@ namespace PolyFrac
                                           const double       n_nodes) const
   {
     std::ostringstream choice;
-    choice << "linear solver " << method_for(dim, n_nodes);
+    choice << "linear solver " << selection_name(method_for(dim, n_nodes));
     if (automatic)
       choice << " (Linear solver/Method = automatic: " << n_nodes
              << " node sides, AMG above " << largest_direct_level[dim - 2]

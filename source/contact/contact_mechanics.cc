@@ -57,8 +57,8 @@ namespace PolyFrac
         scale_min = std::min(scale_min, scale_aware);
         scale_max = std::max(scale_max, scale_aware);
         beta.push_back(prm.contact.beta > 0 ? prm.contact.beta : scale_aware);
-        threshold.push_back(friction_law == "Tresca" ? g->value(face.centroid) :
-                                                       0.);
+        threshold.push_back(
+          friction_law == FrictionLaw::tresca ? g->value(face.centroid) : 0.);
         if (threshold.back() < 0)
           {
             std::ostringstream where;
@@ -96,7 +96,7 @@ namespace PolyFrac
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;
     load_vector.reinit(n);
-    if (prm.solver.method == "AMG" && prm.contact.bubbles)
+    if (prm.solver.method == SolverMethod::amg && prm.contact.bubbles)
       {
         condensation =
           std::make_unique<FaceCondensation<dim>>(trilinos_stiffness,
@@ -256,7 +256,7 @@ namespace PolyFrac
         const Tensor<2, dim> &Q      = face.frame;
         const Tensor<1, dim>  lambda = Q * face_multiplier(x, i);
         const Tensor<1, dim>  j      = Q * face_jump(x, i);
-        const Tensor<1, dim>  j_old  = friction_law == "Coulomb" ?
+        const Tensor<1, dim>  j_old  = friction_law == FrictionLaw::coulomb ?
                                          Q * face_jump(previous_step, i) :
                                          Tensor<1, dim>();
         const double          b      = beta[i];
@@ -269,7 +269,7 @@ namespace PolyFrac
         const double b_t_norm = b_t.norm();
         const bool   in_contact =
           forced ? forced->normal[i] == NormalState::contact : b_n > 0;
-        const double g = friction_law == "Coulomb" ?
+        const double g = friction_law == FrictionLaw::coulomb ?
                            friction_coefficient * std::max(b_n, 0.) :
                            threshold[i];
 
@@ -291,8 +291,8 @@ namespace PolyFrac
           }
 
         const bool frictionless_face =
-          friction_law == "frictionless" ||
-          (friction_law == "Coulomb" && !in_contact);
+          friction_law == FrictionLaw::frictionless ||
+          (friction_law == FrictionLaw::coulomb && !in_contact);
         if (frictionless_face)
           {
             R.tangential[i] = TangentialState::free;
@@ -339,7 +339,7 @@ namespace PolyFrac
                     M_lambda[d][e] = (d == e ? 1. : 0.) - P;
                     M_jump[d][e]   = -b * P;
                   }
-                if (friction_law == "Coulomb")
+                if (friction_law == FrictionLaw::coulomb)
                   {
                     M_lambda[d][0] = -friction_coefficient * hat[d];
                     M_jump[d][0]   = -friction_coefficient * b * hat[d];
@@ -916,7 +916,8 @@ namespace PolyFrac
                             ExcMessage(
                               "The contact solver did not converge at load "
                               "factor " +
-                              std::to_string(load) + " (" + friction_law +
+                              std::to_string(load) + " (" +
+                              selection_name(friction_law) +
                               "): Newton reached " +
                               std::to_string(prm.nonlinear.max_iterations) +
                               " iterations, after dividing the "

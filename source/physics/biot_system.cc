@@ -30,7 +30,7 @@ namespace PolyFrac
     , n_s(bubbles.n_bubbles())
     , n_p(pressure_dofs.n_dofs())
     , iterative(unknowns == Unknowns::bubbles_and_pressures &&
-                prm.solver.method != "direct")
+                prm.solver.method != SolverMethod::direct)
   {
     AssertThrow(!dofs.is_distributed(),
                 ExcMessage("In <" + prm.file_name +

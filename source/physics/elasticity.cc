@@ -235,7 +235,7 @@ namespace PolyFrac
     // Distributed, both methods assemble a Trilinos matrix whose rows each
     // rank owns; the right-hand side is summed over the ranks.
     const bool trilinos =
-      prm.solver.method != "direct" || dofs.is_distributed();
+      prm.solver.method != SolverMethod::direct || dofs.is_distributed();
     const auto make_matrix = [&]() {
       if (dofs.is_distributed())
         {
@@ -609,7 +609,7 @@ namespace PolyFrac
     unsigned int iterations = 0;
     if (dofs.is_distributed())
       iterations = solve_distributed(load, u);
-    else if (prm.solver.method == "direct")
+    else if (prm.solver.method == SolverMethod::direct)
       {
         if (!direct)
           {
@@ -643,7 +643,7 @@ namespace PolyFrac
       dofs.get_communicator(),
       load,
       [&](auto &x, const auto &b) {
-        if (prm.solver.method == "direct")
+        if (prm.solver.method == SolverMethod::direct)
           {
             if (!distributed_direct)
               {

@@ -533,7 +533,7 @@ namespace PolyFrac
         SparseMatrix<double> matrix;
         make_serial_matrix(sparsity, matrix);
         assemble(data, previous, constraints, matrix, rhs);
-        if (prm.solver.method == "direct")
+        if (prm.solver.method == SolverMethod::direct)
           {
             SparseDirectUMFPACK direct;
             try
@@ -602,7 +602,7 @@ namespace PolyFrac
                           dofs.get_communicator(),
                           rhs,
                           [&](auto &x, const auto &b) {
-                            if (prm.solver.method != "direct")
+                            if (prm.solver.method != SolverMethod::direct)
                               iterations = solve_cg(matrix, b, x);
                             else
                               AssertThrow(solve_by_mumps(matrix, x, b),

@@ -654,19 +654,19 @@ namespace PolyFrac
   std::shared_ptr<const PoroelasticSolution>
   make_analytic_solution(const Parameters &prm)
   {
-    const std::string &name = prm.exact.analytic_solution;
-    if (name == "none")
+    const AnalyticSolution name = prm.exact.analytic_solution;
+    if (name == AnalyticSolution::none)
       return nullptr;
     const Point<3> &lower = prm.mesh.lower_left, &upper = prm.mesh.upper_right;
     const unsigned int vertical = prm.dim - 1;
-    if (name == "terzaghi")
+    if (name == AnalyticSolution::terzaghi)
       return std::make_shared<Terzaghi>(poroelastic_data(prm),
                                         upper[vertical] - lower[vertical],
                                         prm.exact.analytic_load,
                                         lower[vertical],
                                         vertical);
-    AssertThrow(name == "mandel" && prm.dim == 2,
-                ExcMessage("Analytic solution <" + name +
+    AssertThrow(name == AnalyticSolution::mandel && prm.dim == 2,
+                ExcMessage("Analytic solution <" + selection_name(name) +
                            "> is not available in dimension " +
                            std::to_string(prm.dim) + "."));
     return std::make_shared<Mandel>(poroelastic_data(prm),

@@ -57,7 +57,7 @@ namespace PolyFrac
       {
         jumps.push_back(jump(geometry, dofs, network, i));
         tresca_threshold.push_back(
-          prm.contact.friction_law == "Tresca" ?
+          prm.contact.friction_law == FrictionLaw::tresca ?
             g->value(geometry.faces[network.fracture_faces[i].face].centroid) :
             0.);
       }
@@ -189,7 +189,7 @@ namespace PolyFrac
         for (unsigned int d = 1; d < dim; ++d)
           slip += increment[d] * increment[d];
         const double threshold =
-          prm.contact.friction_law == "Coulomb" ?
+          prm.contact.friction_law == FrictionLaw::coulomb ?
             prm.contact.friction_coefficient * local_lambda[0] :
             tresca_threshold[i];
         contact_work -= measure * local_lambda[0] * previous[0];

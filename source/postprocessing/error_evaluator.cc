@@ -108,7 +108,7 @@ namespace PolyFrac
                 const double       time)
     {
       std::unique_ptr<Function<dim>> exact;
-      if (prm.exact.analytic_solution != "none")
+      if (prm.exact.analytic_solution != AnalyticSolution::none)
         {
           const auto solution = make_analytic_solution(prm);
           if (pressure)

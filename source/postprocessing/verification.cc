@@ -7,7 +7,7 @@ namespace PolyFrac
   RateReference
   rate_reference(const Parameters &prm)
   {
-    return {prm.mesh.refinement == "adaptive" ? prm.dim : 0};
+    return {prm.mesh.refinement == MeshRefinement::adaptive ? prm.dim : 0};
   }
 
 

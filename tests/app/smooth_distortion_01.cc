@@ -40,7 +40,7 @@ main()
 {
   Parameters prm           = Testing::default_parameters(3, 4);
   prm.mesh.distortion      = 0.2;
-  prm.mesh.distortion_type = "smooth";
+  prm.mesh.distortion_type = DistortionType::smooth;
   Testing::add_fractures_with_tips(prm, 3);
   std::vector<double> strains;
   for (unsigned int level = 0; level < 4; ++level)

@@ -20,7 +20,7 @@ main()
   Parameters prm(3);
   prm.file_name        = "scene.prm";
   prm.solver.automatic = false;
-  prm.solver.method    = "direct";
+  prm.solver.method    = SolverMethod::direct;
 
   const double n_cells   = 1e5;
   const double one_rank  = estimated_memory(prm, n_cells, 1, 1);
@@ -41,10 +41,10 @@ main()
   // more than 2,000 nodes by AMG, whose estimate is the smaller.
   const Parameters automatic(3);
   AssertThrow(automatic.solver.automatic &&
-                automatic.solver.method_for(3, 2000) == "direct" &&
-                automatic.solver.method_for(3, 2001) == "AMG" &&
-                automatic.solver.method_for(2, 1e5) == "direct" &&
-                automatic.solver.method_for(2, 1e5 + 1) == "AMG",
+                automatic.solver.method_for(3, 2000) == SolverMethod::direct &&
+                automatic.solver.method_for(3, 2001) == SolverMethod::amg &&
+                automatic.solver.method_for(2, 1e5) == SolverMethod::direct &&
+                automatic.solver.method_for(2, 1e5 + 1) == SolverMethod::amg,
               ExcMessage("Method = automatic must be the default and choose "
                          "AMG above 2,000 nodes in 3D and 1e5 in 2D"));
   AssertThrow(estimated_memory(automatic, n_cells) < one_rank,

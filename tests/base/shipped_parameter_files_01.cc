@@ -33,9 +33,9 @@ main()
       Parameters         prm(dim);
       prm.parse(file.string());
       std::cout << file.filename().string() << ": dimension " << dim << ", "
-                << prm.model << ", Linear solver/Method = " << prm.solver.method
-                << ", "
-                << "mesh: " << prm.mesh.source << std::endl;
+                << prm.model << ", Linear solver/Method = "
+                << selection_name(prm.solver.method) << ", "
+                << "mesh: " << selection_name(prm.mesh.source) << std::endl;
       for (const std::string &warning : prm.warnings)
         std::cout << "  warning: " << warning << std::endl;
       n_warning_files += !prm.warnings.empty();

@@ -168,21 +168,22 @@ void
 check_all()
 {
   check<dim>("hypercubes", [](Parameters &) {});
-  check<dim>("simplices", [](Parameters &p) { p.mesh.cell_type = "simplex"; });
+  check<dim>("simplices",
+             [](Parameters &p) { p.mesh.cell_type = CellType::simplex; });
   check<dim>("random distortion",
              [](Parameters &p) { p.mesh.distortion = 0.3; });
   check<dim>("smooth distortion", [](Parameters &p) {
     p.mesh.distortion      = 0.3;
-    p.mesh.distortion_type = "smooth";
+    p.mesh.distortion_type = DistortionType::smooth;
   });
   check<dim>("distorted simplices", [](Parameters &p) {
-    p.mesh.cell_type  = "simplex";
+    p.mesh.cell_type  = CellType::simplex;
     p.mesh.distortion = 0.2;
   });
   check<dim>("local refinement (hanging nodes)",
              [](Parameters &p) { p.mesh.local_refinements = 1; });
   check<dim>("local refinement, simplices", [](Parameters &p) {
-    p.mesh.cell_type         = "simplex";
+    p.mesh.cell_type         = CellType::simplex;
     p.mesh.local_refinements = 2;
   });
   check<dim>("local refinement, distorted", [](Parameters &p) {
@@ -190,7 +191,7 @@ check_all()
     p.mesh.distortion        = 0.25;
   });
   check<dim>("refined towards the fractures", [](Parameters &p) {
-    p.mesh.cell_type            = "simplex";
+    p.mesh.cell_type            = CellType::simplex;
     p.mesh.fracture_refinements = dim == 2 ? 2 : 1;
   });
   check<dim>("agglomerated", [](Parameters &p) {

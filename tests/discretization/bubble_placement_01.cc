@@ -27,7 +27,7 @@ check(const std::string &cells, const bool split)
 {
   Parameters prm = Testing::default_parameters(dim, 4);
   Testing::add_crossing_fractures(prm, dim);
-  prm.mesh.cell_type        = cells;
+  prm.mesh.cell_type        = parse_selection<CellType>(cells);
   prm.contact.split_bubbles = split;
   const LevelDiscretization<dim> level(prm, 0);
   const auto                    &geometry = *level.geometry;

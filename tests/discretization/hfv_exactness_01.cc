@@ -147,15 +147,16 @@ void
 check_all()
 {
   check<dim>("hypercubes", [](Parameters &) {});
-  check<dim>("simplices", [](Parameters &p) { p.mesh.cell_type = "simplex"; });
+  check<dim>("simplices",
+             [](Parameters &p) { p.mesh.cell_type = CellType::simplex; });
   check<dim>("random distortion",
              [](Parameters &p) { p.mesh.distortion = 0.3; });
   check<dim>("smooth distortion", [](Parameters &p) {
     p.mesh.distortion      = 0.3;
-    p.mesh.distortion_type = "smooth";
+    p.mesh.distortion_type = DistortionType::smooth;
   });
   check<dim>("distorted simplices", [](Parameters &p) {
-    p.mesh.cell_type  = "simplex";
+    p.mesh.cell_type  = CellType::simplex;
     p.mesh.distortion = 0.2;
   });
   check<dim>("local refinement (hanging nodes)",

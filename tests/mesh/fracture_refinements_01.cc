@@ -79,7 +79,7 @@ main()
   check<2>(
     "inclined segment, triangles",
     [](Parameters &p) {
-      p.mesh.cell_type = "simplex";
+      p.mesh.cell_type = CellType::simplex;
       p.mesh.subdivisions.assign(2, 8);
       p.fractures.geometries = {
         {Point<3>(-0.5, 0.5, 0), Point<3>(0.5, -0.5, 0)}};
@@ -105,7 +105,7 @@ main()
   check<2>(
     "gmsh line",
     [](Parameters &p) {
-      p.mesh.source                  = "gmsh";
+      p.mesh.source                  = MeshSource::gmsh;
       p.mesh.file_name               = std::string(SOURCE_DIR) + "/gmsh_01.geo";
       p.fractures.gmsh_physical_tags = {10};
     },

@@ -111,7 +111,7 @@ namespace
         const double          exact_measure)
   {
     Parameters prm(dim);
-    prm.mesh.source                  = "gmsh";
+    prm.mesh.source                  = MeshSource::gmsh;
     prm.mesh.file_name               = std::string(SOURCE_DIR) + "/" + geo;
     prm.fractures.gmsh_physical_tags = {10};
     for (unsigned int level = 0; level < 2; ++level)
@@ -136,7 +136,7 @@ namespace
                      exact_normal,
                      exact_measure);
     prm.mesh.local_refinements = 0;
-    prm.mesh.refinement        = "adaptive";
+    prm.mesh.refinement        = MeshRefinement::adaptive;
     const LevelDiscretization<dim> coarse(prm, 0);
     Vector<float>                  indicators(coarse.mesh->n_cells());
     for (const auto &ff : coarse.network->fracture_faces)

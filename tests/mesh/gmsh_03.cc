@@ -52,7 +52,7 @@ namespace
   parameters(const unsigned int dim, const std::string &file)
   {
     Parameters prm(dim);
-    prm.mesh.source                  = "gmsh";
+    prm.mesh.source                  = MeshSource::gmsh;
     prm.mesh.file_name               = std::string(SOURCE_DIR) + "/" + file;
     prm.fractures.gmsh_physical_tags = {10};
     return prm;

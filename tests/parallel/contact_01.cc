@@ -73,7 +73,7 @@ namespace
       n_other_states +=
         distributed.contact.normal[i] != serial.contact.normal[i] ||
         distributed.contact.tangential[i] != serial.contact.tangential[i];
-    const bool   direct = prm.solver.method == "direct";
+    const bool   direct = prm.solver.method == SolverMethod::direct;
     const double tolerance =
       direct ?
         1e-10 :
@@ -87,7 +87,7 @@ namespace
                    0.;
 
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << file << ", " << prm.solver.method << ", "
+      std::cout << file << ", " << selection_name(prm.solver.method) << ", "
                 << (prm.contact.split_bubbles ? "split bubbles, " : "")
                 << prm.mesh.cells_per_polytope
                 << " cells per polytope: " << serial.displacement.size()

@@ -37,7 +37,7 @@ namespace
     prm.boundary.dirichlet_expression = exact;
     prm.exact.displacement            = exact;
     prm.exact.displacement_jump       = "0; z > 0 ? z^4 : 0; 0";
-    prm.solver.method                 = method;
+    prm.solver.method                 = parse_selection<SolverMethod>(method);
     return prm;
   }
 

@@ -45,7 +45,7 @@ namespace
   {
     std::cout << dim << "D, " << cell_type << std::endl;
     Parameters prm     = Testing::default_parameters(dim, 4);
-    prm.mesh.cell_type = cell_type;
+    prm.mesh.cell_type = parse_selection<CellType>(cell_type);
     prm.model          = "elasticity";
 
     // Patch test: u = A x, σ = 2μ ε(A) + λ tr(A) I with μ = λ = 1; the

@@ -38,7 +38,7 @@ namespace
                    const bool         with_bubbles)
   {
     Parameters prm             = Testing::default_parameters(dim, subdivisions);
-    prm.mesh.cell_type         = cell_type;
+    prm.mesh.cell_type         = parse_selection<CellType>(cell_type);
     prm.model                  = "elasticity";
     prm.lame_mu                = 1;
     prm.lame_lambda            = 0;

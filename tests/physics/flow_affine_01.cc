@@ -149,10 +149,10 @@ check_meshes(const Case &test)
   std::vector<std::pair<std::string, std::function<void(Parameters &)>>>
     meshes = {{"hypercubes", [](Parameters &) {}},
               {"simplices",
-               [](Parameters &p) { p.mesh.cell_type = "simplex"; }},
+               [](Parameters &p) { p.mesh.cell_type = CellType::simplex; }},
               {"distorted simplices",
                [](Parameters &p) {
-                 p.mesh.cell_type  = "simplex";
+                 p.mesh.cell_type  = CellType::simplex;
                  p.mesh.distortion = 0.2;
                }},
               {"local refinement (hanging nodes)",

@@ -109,7 +109,7 @@ check(const std::string                       &family,
   Parameters prm              = Testing::default_parameters(dim, 4);
   prm.mesh.global_refinements = dim == 2 ? 1 : 0;
   // CG + AMG: the finest 3D levels have 10^5 to 10^6 unknowns.
-  prm.solver.method    = "AMG";
+  prm.solver.method    = SolverMethod::amg;
   prm.solver.tolerance = 1e-12;
   set_manufactured_solution(prm, dim);
   setup(prm);
@@ -180,12 +180,14 @@ main(int argc, char **argv)
   // vertices stay without kinking the mesh (MeshBuilder::distort()).
   const auto smooth = [](Parameters &p) {
     p.mesh.distortion      = 0.1;
-    p.mesh.distortion_type = "smooth";
+    p.mesh.distortion_type = DistortionType::smooth;
   };
   check<2>(
     "quadrilaterals", [](Parameters &) {}, 4);
   check<2>(
-    "triangles", [](Parameters &p) { p.mesh.cell_type = "simplex"; }, 4);
+    "triangles",
+    [](Parameters &p) { p.mesh.cell_type = CellType::simplex; },
+    4);
   // Random distortion relative to the local h (fracture vertices move in
   // their plane, tips and intersections stay).
   check<2>(
@@ -200,7 +202,9 @@ main(int argc, char **argv)
   check<3>(
     "hexahedra", [](Parameters &) {}, 4);
   check<3>(
-    "tetrahedra", [](Parameters &p) { p.mesh.cell_type = "simplex"; }, 4);
+    "tetrahedra",
+    [](Parameters &p) { p.mesh.cell_type = CellType::simplex; },
+    4);
   check<3>("smoothly distorted hexahedra (non-planar faces)", smooth, 4);
   check<3>(
     "hanging nodes", [](Parameters &p) { p.mesh.local_refinements = 1; }, 4);

@@ -21,7 +21,7 @@ void
 check(const std::string &cell_type, const double aperture)
 {
   Parameters prm     = Testing::default_parameters(dim, 4);
-  prm.mesh.cell_type = cell_type;
+  prm.mesh.cell_type = parse_selection<CellType>(cell_type);
   if (dim == 2)
     prm.fractures.geometries = {{Point<3>(-1, 0, 0), Point<3>(1, 0, 0)}};
   else

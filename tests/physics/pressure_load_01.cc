@@ -23,7 +23,7 @@ void
 check(const std::string &cell_type)
 {
   Parameters prm     = Testing::default_parameters(dim, 4);
-  prm.mesh.cell_type = cell_type;
+  prm.mesh.cell_type = parse_selection<CellType>(cell_type);
   Testing::add_crossing_fractures(prm, dim);
   const LevelDiscretization<dim> level(prm, 0);
   const auto                    &geometry = *level.geometry;

@@ -17,7 +17,7 @@ main()
   // Mandel with PorePy's data on [0, 100] x [0, 10], shifted by (5, -2).
   Parameters prm(2);
   prm.model                     = "poromechanics";
-  prm.exact.analytic_solution   = "mandel";
+  prm.exact.analytic_solution   = AnalyticSolution::mandel;
   prm.exact.analytic_load       = 6e8;
   prm.mesh.lower_left           = Point<3>(5, -2, 0);
   prm.mesh.upper_right          = Point<3>(105, 8, 0);
@@ -59,7 +59,7 @@ main()
   // Terzaghi in 3D along z on [0, 1]^2 x [-1, 2], 1/M = 0.
   Parameters prm3(3);
   prm3.model                     = "poromechanics";
-  prm3.exact.analytic_solution   = "terzaghi";
+  prm3.exact.analytic_solution   = AnalyticSolution::terzaghi;
   prm3.exact.analytic_load       = 6e8;
   prm3.mesh.lower_left           = Point<3>(0, 0, -1);
   prm3.mesh.upper_right          = Point<3>(1, 1, 2);
@@ -111,7 +111,7 @@ main()
                    "Flow/Permeability)"
                 << std::endl;
     }
-  prm3.exact.analytic_solution = "none";
+  prm3.exact.analytic_solution = AnalyticSolution::none;
   AssertThrow(make_analytic_solution(prm3) == nullptr,
               ExcMessage("none gives no solution"));
 }

@@ -4,6 +4,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <polyfrac/base/selection.h>
+
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -12,6 +15,157 @@
 namespace PolyFrac
 {
   using namespace dealii;
+
+  /** Mesh/Source: where the triangulation comes from. */
+  enum class MeshSource
+  {
+    /** A generated box (Lower left corner, Upper right corner,
+     * Subdivisions, Cell type). */
+    hyper_rectangle,
+    /** A gmsh file (File name). */
+    gmsh
+  };
+  /** Mesh/Cell type of a generated box. */
+  enum class CellType
+  {
+    /** Quadrilaterals or hexahedra. */
+    hypercube,
+    /** Triangles or tetrahedra. */
+    simplex
+  };
+  /** Mesh/Refinement: how level k > 0 of a convergence study is made. */
+  enum class MeshRefinement
+  {
+    /** Every cell is refined once more. */
+    uniform,
+    /** The cells of the largest error indicators are refined. */
+    adaptive
+  };
+  /** Mesh/Distortion type. */
+  enum class DistortionType
+  {
+    /** An independent perturbation of each vertex. */
+    random,
+    /** A sine map that bends the faces (Kershaw-like). */
+    smooth
+  };
+  /** Contact/Friction law. */
+  enum class FrictionLaw
+  {
+    /** No tangential traction. */
+    frictionless,
+    /** The slip bound is the given threshold g. */
+    tresca,
+    /** The slip bound is F times the normal traction. */
+    coulomb
+  };
+  /** Exact solution/Analytic solution: a built-in poroelastic solution. */
+  enum class AnalyticSolution
+  {
+    /** None: the exact fields are the expressions given, if any. */
+    none,
+    /** Terzaghi's column. */
+    terzaghi,
+    /** Mandel's slab. */
+    mandel
+  };
+  /** Nonlinear solver/Initial guess of the contact Newton. */
+  enum class InitialGuess
+  {
+    /** The contact states of the previous level (nested iteration). */
+    previous_level,
+    /** Zero. */
+    zero
+  };
+  /** Linear solver/Method (automatic resolves to one of these per level). */
+  enum class SolverMethod
+  {
+    /** UMFPACK (MUMPS in the monolithic Newton). */
+    direct,
+    /** Krylov solvers preconditioned by ML's AMG. */
+    amg
+  };
+  /** Output/VTU compression: the zlib level of the VTU data. */
+  enum class VtuCompression
+  {
+    /** The smallest files. */
+    best,
+    /** Quicker to write, larger. */
+    fast,
+    /** No compression. */
+    none
+  };
+
+  /** The names of MeshSource. */
+  template <>
+  struct SelectionNames<MeshSource>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {
+      {"hyper rectangle", "gmsh"}};
+  };
+  /** The names of CellType. */
+  template <>
+  struct SelectionNames<CellType>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {
+      {"hypercube", "simplex"}};
+  };
+  /** The names of MeshRefinement. */
+  template <>
+  struct SelectionNames<MeshRefinement>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {
+      {"uniform", "adaptive"}};
+  };
+  /** The names of DistortionType. */
+  template <>
+  struct SelectionNames<DistortionType>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {{"random", "smooth"}};
+  };
+  /** The names of FrictionLaw. */
+  template <>
+  struct SelectionNames<FrictionLaw>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 3> names = {
+      {"frictionless", "Tresca", "Coulomb"}};
+  };
+  /** The names of AnalyticSolution. */
+  template <>
+  struct SelectionNames<AnalyticSolution>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 3> names = {
+      {"none", "terzaghi", "mandel"}};
+  };
+  /** The names of InitialGuess. */
+  template <>
+  struct SelectionNames<InitialGuess>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {
+      {"previous level", "zero"}};
+  };
+  /** The names of SolverMethod. */
+  template <>
+  struct SelectionNames<SolverMethod>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {{"direct", "AMG"}};
+  };
+  /** The names of VtuCompression. */
+  template <>
+  struct SelectionNames<VtuCompression>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 3> names = {
+      {"best", "fast", "none"}};
+  };
 
   /**
    * Everything a scene is made of, read from a deal.II parameter file.
@@ -108,10 +262,10 @@ namespace PolyFrac
     /** Mesh. Points have 3 coordinates; those beyond dim are 0. */
     struct MeshData
     {
-      /** Source: hyper rectangle | gmsh. */
-      std::string source;
-      /** Cell type: hypercube | simplex. */
-      std::string cell_type;
+      /** Source. */
+      MeshSource source;
+      /** Cell type. */
+      CellType cell_type;
       /** Lower left corner of the generated box. */
       Point<3> lower_left;
       /** Upper right corner of the generated box. */
@@ -120,8 +274,8 @@ namespace PolyFrac
       std::vector<unsigned int> subdivisions;
       /** Global refinements of level 0 (level k refines k more times). */
       unsigned int global_refinements;
-      /** Refinement: uniform | adaptive (how level k > 0 is made). */
-      std::string refinement;
+      /** Refinement (how level k > 0 is made). */
+      MeshRefinement refinement;
       /** Refined fraction: the fraction of the cells an adaptive cycle
        * refines. */
       double refined_fraction;
@@ -136,8 +290,8 @@ namespace PolyFrac
       unsigned int fracture_refinements;
       /** Distortion: vertex displacement relative to the local mesh size. */
       double distortion;
-      /** Distortion type: random | smooth. */
-      std::string distortion_type;
+      /** Distortion type. */
+      DistortionType distortion_type;
       /** Random seed of the random distortion. */
       unsigned int random_seed;
       /** Cells per polytope of the METIS agglomeration (1: none). */
@@ -205,8 +359,8 @@ namespace PolyFrac
       std::string matrix_pressure;
       /** Fracture pressure p_f (adds err_fracture_pressure). */
       std::string fracture_pressure;
-      /** Analytic solution: none | terzaghi | mandel (built-in series). */
-      std::string analytic_solution;
+      /** Analytic solution (built-in series). */
+      AnalyticSolution analytic_solution;
       /** Analytic load: Terzaghi's q (Pa) or Mandel's F (N/m), compressive
        * when positive. */
       double analytic_load;
@@ -230,8 +384,8 @@ namespace PolyFrac
     /** Contact (Model = contact mechanics). */
     struct ContactData
     {
-      /** Friction law: frictionless | Tresca | Coulomb. */
-      std::string friction_law;
+      /** Friction law. */
+      FrictionLaw friction_law;
       /** Friction coefficient F (Coulomb). */
       double friction_coefficient;
       /** Tresca threshold g ≥ 0: a scalar expression. */
@@ -306,8 +460,8 @@ namespace PolyFrac
       unsigned int max_iterations;
       /** Tolerance on both relative residuals. */
       double tolerance;
-      /** "previous level" (nested iteration) or "zero". */
-      std::string initial_guess;
+      /** Initial guess of the contact Newton on levels after the first. */
+      InitialGuess initial_guess;
       /** Coupling tolerance of the fixed-stress iterations. */
       double coupling_tolerance;
       /** Maximum coupling iterations per time step. */
@@ -342,7 +496,7 @@ namespace PolyFrac
        * use; with Method = automatic, direct until Simulator resolves it
        * for a level (method_for()).
        */
-      std::string method;
+      SolverMethod method;
       /** Whether Method = automatic: each level's size chooses. */
       bool automatic;
       /**
@@ -364,7 +518,7 @@ namespace PolyFrac
        * dimensions: Method, or, with Method = automatic, direct up to
        * largest_direct_level node sides and AMG above.
        */
-      std::string
+      SolverMethod
       method_for(const unsigned int dim, const double n_nodes) const;
       /** How method_for() chose, for the level line of the output. */
       std::string
@@ -384,9 +538,8 @@ namespace PolyFrac
       std::string directory;
       /** Write VTU: whether the solution files are written. */
       bool write_vtu;
-      /** VTU compression: zlib level of the VTU data, "best", "fast" or
-       * "none". */
-      std::string vtu_compression;
+      /** VTU compression: zlib level of the VTU data. */
+      VtuCompression vtu_compression;
       /** Print timings: whether the timing table is printed. */
       bool print_timings;
       /** Checkpoint interval: a checkpoint after every this many steps

@@ -354,7 +354,7 @@ namespace PolyFrac
     const DoFMap<dim>          &dofs;
     Elasticity<dim>             elasticity;
 
-    std::string friction_law;
+    FrictionLaw friction_law;
     double      friction_coefficient;
     /** β_σ and the Tresca threshold g_σ per fracture face. */
     std::vector<double> beta, threshold;
