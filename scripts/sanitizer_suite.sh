@@ -82,7 +82,7 @@ long_tests=(
   # Release 49 s: 21 runs of 3 levels up to 128 x 128 cells; the
   # non-negative weights stay through discretization/affine_exactness_01.
   mesh/agglomeration_sweep
-  # Release 84 s: 12 runs of 3D agglomerates on levels up to 32^3 cells.
+  # Release 50 s: 21 runs of 3D agglomerates on levels up to 16^3 cells.
   mesh/agglomeration_sweep_3d
   # Release 29 s, 2 ranks; the checkpoint path stays through io/restart
   # (serial, 6 steps in this suite).

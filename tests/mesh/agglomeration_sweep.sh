@@ -13,31 +13,31 @@
 # 2D: three levels from 32 x 32 cells for every run (on 16 x 16 the
 # coarsest agglomerates of 13 cells are pre-asymptotic: order 0.83).
 #
-# 3D: each run gets the cheapest level set measured to reach 0.9 (3 levels from
-# 6^3 or 8^3, or 2 levels from 8^3, 12^3, 16^3 or 32^3; Global
-# refinements = 0). 5 tetrahedra per cube make small agglomerates: 2 levels
-# from 8^3 or 12^3 suffice for every n. Agglomerates of many hexahedra are
-# pre-asymptotic on the levels a test can afford: 16 cells reach 0.62 from
-# 16^3 to 32^3, 0.72 over 12^3, 24^3, 48^3 and 0.79 over 16^3, 32^3, 64^3;
-# only 2 levels from 32^3 (to 64^3: 740,000 unknowns, about 500 s and 12 GB
-# each) reach 1.15 (hexahedra) and 1.22 (distorted). h is the largest
-# agglomerate's diameter and jumps from level to level, so a 2-level order
-# depends on the METIS partition: 11 hexahedra per polytope reach 0.88 from
-# 16^3 and 0.87 from 20^3, but 0.92 over 3 levels from 12^3 (to 48^3, about
-# 120 s).
+# 3D: every family and n on two levels from 8^3 cells, with the cubic
+# displacement u = (x^2 y + z^3/3, y^2 z - x z^2, x^3/3 + x y z) (lambda = mu
+# = 1, its body force below; not affine, so err_grad_u is O(h), not exact):
+# about 50 s for the 21 runs, orders 0.94 to 1.44 (2026-11-27). With
+# prm/smooth-3d.prm's own solution (sin(pi x) ... over [-1, 1]^3) the
+# agglomerates of many hexahedra are pre-asymptotic on the levels a test can
+# afford: 16 cells reach 0.62 from 16^3 to 32^3 and 0.79 over 16^3, 32^3,
+# 64^3; only 2 levels from 32^3 (to 64^3: 740,000 unknowns, about 500 s and
+# 12 GB each) reach 1.15 (hexahedra) and 1.22 (distorted). `full` as the
+# fifth argument runs that solution on the cheapest level set measured to
+# reach 0.9 for each run (3 levels from 6^3 or 8^3, or 2 levels from 8^3,
+# 12^3, 16^3 or 32^3; about 22 minutes in all, 12 GB peak, measured on
+# 2026-11-27). h is the largest agglomerate's diameter and jumps from level
+# to level, so a 2-level order depends on the METIS partition.
 #
-# By default a subset of 12 runs (about 2 minutes on one core): tetrahedra
-# with every n, hexahedra with 2, 4 and 8, distorted hexahedra with 2 and 6.
-# `full` as the fifth argument runs all 21, each measured to pass on its own
-# (about 22 minutes in all, 12 GB peak; 2026-11-27). The linear solver is
-# the automatic choice, AMG on the levels of more than 2,000 node sides
-# (the direct solver took 8 to 10 s on agglomerated levels of about 10,000
-# unknowns, AMG 1 to 2 s, with the same errors).
+# The linear solver is the automatic choice, AMG on the levels of more than
+# 2,000 node sides (the direct solver took 8 to 10 s on agglomerated levels
+# of about 10,000 unknowns, AMG 1 to 2 s, with the same errors).
 #
 # usage: agglomeration_sweep.sh POLYFRAC SOURCE_DIR WORK_DIR DIM [full]
 set -euo pipefail
 program=$1 source=$2 work=$3 dim=$4 mode=${5:-subset}
 rm -rf "$work" && mkdir -p "$work"
+# The exact solution, if not the scene's own (--set arguments).
+solution=()
 # mesh family | cells per polytope | subdivisions | levels
 if [ "$dim" = 2 ]; then
   scene=$source/prm/smooth-2d.prm
@@ -59,11 +59,16 @@ else
       "$tet|2|8|2" "$tet|3|8|2" "$tet|4|8|2" "$tet|6|12|2" "$tet|8|8|2"
       "$tet|11|8|2" "$tet|16|12|2")
   else
-    runs_table=(
-      "$hex|2|6|3" "$hex|4|16|2" "$hex|8|16|2"
-      "$dist|2|6|3" "$dist|6|16|2"
-      "$tet|2|8|2" "$tet|3|8|2" "$tet|4|8|2" "$tet|6|12|2" "$tet|8|8|2"
-      "$tet|11|8|2" "$tet|16|12|2")
+    cubic="x^2*y + z^3/3; -x*z^2 + y^2*z; x^3/3 + x*y*z"
+    solution=(--set "Body force/Function expression=-8*y - 2*z; -4*x - 6*z; -2*x - 4*y"
+              --set "Boundary conditions/Dirichlet expression=$cubic"
+              --set "Exact solution/Displacement=$cubic")
+    runs_table=()
+    for mesh in "$hex" "$dist" "$tet"; do
+      for n in 2 3 4 6 8 11 16; do
+        runs_table+=("$mesh|$n|8|2")
+      done
+    done
   fi
 fi
 runs=0 orders="" lowest=99
@@ -72,7 +77,7 @@ for entry in "${runs_table[@]}"; do
   subdivisions=$s$(for ((d = 1; d < dim; ++d)); do printf ', %s' "$s"; done)
   name="$mesh, Cells per polytope = $n, $s^$dim cells, $levels levels"
   log="$work/run-$runs.log" out="$work/out-$runs"
-  if ! "$program" "$scene" --set "Mesh/$mesh" \
+  if ! "$program" "$scene" "${solution[@]}" --set "Mesh/$mesh" \
       --set "Mesh/Subdivisions=$subdivisions" \
       --set "Mesh/Global refinements=0" \
       --set "Mesh/Cells per polytope=$n" \
