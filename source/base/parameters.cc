@@ -345,6 +345,43 @@ namespace PolyFrac
                                 std::regex(R"(^Line <\d+> of file <[^>]*>: )"),
                                 "");
     }
+
+    /** Whether @p value lies between @p lower and @p upper, each bound
+     * included or not. */
+    bool
+    in_range(const double value,
+             const double lower,
+             const bool   lower_included,
+             const double upper,
+             const bool   upper_included)
+    {
+      return (lower_included ? value >= lower : value > lower) &&
+             (upper_included ? value <= upper : value < upper);
+    }
+
+    /**
+     * The double @p entry of the current subsection of @p prm; throws,
+     * naming @p where (file and subsection) and the entry, unless it lies
+     * in @p range ("in (0, 1)", "> 0 (Pa s)"), i.e. between @p lower and
+     * @p upper (in_range()); @p why is added to the message.
+     */
+    double
+    bounded_double(ParameterHandler  &prm,
+                   const std::string &where,
+                   const std::string &entry,
+                   const double       lower,
+                   const bool         lower_included,
+                   const double       upper,
+                   const bool         upper_included,
+                   const std::string &range,
+                   const std::string &why = "")
+    {
+      const double value = prm.get_double(entry);
+      AssertThrow(in_range(value, lower, lower_included, upper, upper_included),
+                  ExcMessage(where + "<" + entry + "> must be " + range +
+                             ", not " + prm.get(entry) + why + "."));
+      return value;
+    }
   } // namespace
 
 
@@ -1482,13 +1519,18 @@ namespace PolyFrac
 
     prm->enter_subsection("Nonlinear solver");
     nonlinear.max_iterations = prm->get_integer("Maximum iterations");
-    nonlinear.tolerance      = prm->get_double("Tolerance");
-    AssertThrow(nonlinear.tolerance > 0 && nonlinear.tolerance < 1,
-                ExcMessage("In <" + file_name +
-                           ">, subsection <Nonlinear solver>: <Tolerance> = " +
-                           prm->get("Tolerance") +
-                           " must be in (0, 1): the residuals are relative, "
-                           "and round-off keeps them above 0."));
+    const std::string nwhere =
+      "In <" + file_name + ">, subsection <Nonlinear solver>: ";
+    nonlinear.tolerance = bounded_double(*prm,
+                                         nwhere,
+                                         "Tolerance",
+                                         0,
+                                         false,
+                                         1,
+                                         false,
+                                         "in (0, 1)",
+                                         ": the residuals are relative, and "
+                                         "round-off keeps them above 0");
     nonlinear.initial_guess =
       parse_selection<InitialGuess>(prm->get("Initial guess"));
     nonlinear.coupling_tolerance = prm->get_double("Coupling tolerance");
@@ -1515,14 +1557,16 @@ namespace PolyFrac
              NonlinearData::CouplingScheme::fixed_stress :
              NonlinearData::CouplingScheme::automatic);
     }
-    nonlinear.forcing_term = prm->get_double("Forcing term");
-    AssertThrow(nonlinear.forcing_term < 1,
-                ExcMessage("In <" + file_name +
-                           ">, subsection <Nonlinear solver>: <Forcing term> "
-                           "= " +
-                           prm->get("Forcing term") +
-                           " must be in [0, 1): the Krylov solve of a Newton "
-                           "step must reduce its residual."));
+    nonlinear.forcing_term = bounded_double(*prm,
+                                            nwhere,
+                                            "Forcing term",
+                                            0,
+                                            true,
+                                            1,
+                                            false,
+                                            "in [0, 1)",
+                                            ": the Krylov solve of a Newton "
+                                            "step must reduce its residual");
     prm->leave_subsection();
 
     prm->enter_subsection("Linear solver");
@@ -1530,14 +1574,17 @@ namespace PolyFrac
     solver.method    = solver.automatic ?
                          SolverMethod::direct :
                          parse_selection<SolverMethod>(prm->get("Method"));
-    solver.tolerance = prm->get_double("Tolerance");
-    AssertThrow(solver.tolerance > 0 && solver.tolerance < 1,
-                ExcMessage("In <" + file_name +
-                           ">, subsection <Linear solver>: <Tolerance> = " +
-                           prm->get("Tolerance") +
-                           " must be in (0, 1): it is relative to the "
-                           "right-hand side, and round-off keeps the "
-                           "residual above 0."));
+    solver.tolerance =
+      bounded_double(*prm,
+                     "In <" + file_name + ">, subsection <Linear solver>: ",
+                     "Tolerance",
+                     0,
+                     false,
+                     1,
+                     false,
+                     "in (0, 1)",
+                     ": it is relative to the right-hand side, and round-off "
+                     "keeps the residual above 0");
     solver.max_iterations  = prm->get_integer("Maximum iterations");
     solver.smoother_sweeps = prm->get_integer("Smoother sweeps");
     prm->leave_subsection();
@@ -1638,12 +1685,8 @@ namespace PolyFrac
                              const double       upper,
                              const bool         strict_lower,
                              const std::string &range) {
-      const double value = prm->get_double(entry);
-      AssertThrow((strict_lower ? value > lower : value >= lower) &&
-                    value <= upper,
-                  ExcMessage(where + "<" + entry + "> must be " + range +
-                             ", not " + prm->get(entry) + "."));
-      return value;
+      return bounded_double(
+        *prm, where, entry, lower, !strict_lower, upper, true, range);
     };
     const double infinity = std::numeric_limits<double>::max();
     flow.permeability     = prm->get("Permeability");

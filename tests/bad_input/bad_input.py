@@ -631,17 +631,19 @@ CASES = {
     "linear_solver_tolerance_zero": case(
         "`Linear solver/Tolerance = 0` (was accepted: an iterative solve "
         "can never reach it)",
-        ["subsection <Linear solver>: <Tolerance> = 0 must be in (0, 1)"],
+        ["subsection <Linear solver>: <Tolerance> must be in (0, 1), not 0: it "
+         "is relative"],
         files={"scene.prm": section("Linear solver", Tolerance="0")}),
     "nonlinear_tolerance_one": case(
         "`Nonlinear solver/Tolerance = 1` (was accepted: one Newton step "
         "passes)",
-        ["subsection <Nonlinear solver>: <Tolerance> = 1 must be in (0, 1)"],
+        ["subsection <Nonlinear solver>: <Tolerance> must be in (0, 1), not 1"],
         files={"scene.prm": section("Nonlinear solver", Tolerance="1")}),
     "forcing_term_one": case(
         "`Forcing term = 1` (was accepted: the Krylov solve of a Newton step "
         "could stop at once)",
-        ["subsection <Nonlinear solver>: <Forcing term> = 1 must be in [0, 1)"],
+        ["subsection <Nonlinear solver>: <Forcing term> must be in [0, 1), not "
+         "1: the Krylov solve"],
         files={"scene.prm": section("Nonlinear solver", Forcing_term="1")}),
     "mobility_beyond_double": case(
         "`Permeability = 1e-306`, `Viscosity = 1e3` under `Model = "

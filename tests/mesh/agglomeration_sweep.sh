@@ -38,15 +38,21 @@ program=$1 source=$2 work=$3 dim=$4 mode=${5:-subset}
 rm -rf "$work" && mkdir -p "$work"
 # The exact solution, if not the scene's own (--set arguments).
 solution=()
+# Adds to runs_table every n of 2 to 16 on each mesh family of "$@" with
+# $subdivisions per direction and $levels levels.
+every_n() {
+  for mesh in "$@"; do
+    for n in 2 3 4 6 8 11 16; do
+      runs_table+=("$mesh|$n|$subdivisions|$levels")
+    done
+  done
+}
+runs_table=()
 # mesh family | cells per polytope | subdivisions | levels
 if [ "$dim" = 2 ]; then
   scene=$source/prm/smooth-2d.prm
-  runs_table=()
-  for mesh in "Cell type=hypercube" "Cell type=simplex" "Distortion=0.2"; do
-    for n in 2 3 4 6 8 11 16; do
-      runs_table+=("$mesh|$n|32|3")
-    done
-  done
+  subdivisions=32 levels=3
+  every_n "Cell type=hypercube" "Cell type=simplex" "Distortion=0.2"
 else
   scene=$source/prm/smooth-3d.prm
   hex="Cell type=hypercube" tet="Cell type=simplex" dist="Distortion=0.2"
@@ -63,12 +69,8 @@ else
     solution=(--set "Body force/Function expression=-8*y - 2*z; -4*x - 6*z; -2*x - 4*y"
               --set "Boundary conditions/Dirichlet expression=$cubic"
               --set "Exact solution/Displacement=$cubic")
-    runs_table=()
-    for mesh in "$hex" "$dist" "$tet"; do
-      for n in 2 3 4 6 8 11 16; do
-        runs_table+=("$mesh|$n|8|2")
-      done
-    done
+    subdivisions=8 levels=2
+    every_n "$hex" "$dist" "$tet"
   fi
 fi
 runs=0 orders="" lowest=99
