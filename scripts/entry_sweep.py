@@ -438,8 +438,14 @@ def run_one(polyfrac, env, prm, out_dir, path, value, timeout, ranks=1):
         out, err = p.communicate(timeout=timeout)
         rc = p.returncode
     except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)
-        out, err = p.communicate()
+        # mpirun passes SIGTERM on to its ranks (which may have left its
+        # process group); what is left of the group is then killed.
+        p.terminate()
+        try:
+            out, err = p.communicate(timeout=20)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            out, err = p.communicate()
         rc = None
     seconds = time.time() - t0
     return rc, out, err, seconds

@@ -15,6 +15,7 @@
 #include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/base/exception_message.h>
+#include <polyfrac/base/mpi.h>
 
 #include <dlfcn.h>
 
@@ -203,21 +204,9 @@ namespace
   {
     int initialized = 0;
     MPI_Initialized(&initialized);
-    const unsigned int n_ranks =
-      initialized ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
-    if (n_ranks == 1)
-      {
-        std::cerr << "\nPolyFrac stopped: " << why << std::endl;
-        return 1;
-      }
-    // One write per rank: std::cerr is unbuffered, and the pieces of a
-    // chain of << from two ranks would interleave on the terminal.
-    std::ostringstream message;
-    message << "\nPolyFrac stopped on rank "
-            << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of "
-            << n_ranks << ": " << why << '\n';
-    std::cerr << message.str() << std::flush;
-    MPI_Abort(MPI_COMM_WORLD, 1);
+    if (initialized && Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      abort_every_rank(why);
+    std::cerr << "\nPolyFrac stopped: " << why << std::endl;
     return 1;
   }
 

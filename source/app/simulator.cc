@@ -341,10 +341,6 @@ namespace PolyFrac
                                                      const Errors      &errors,
                                                      const double wall_seconds)
   {
-    // Rank 0 writes the file; the others have none (but evaluated the
-    // errors, which are MPI sums).
-    if (!time_series)
-      return;
     // The error columns of the time series, looked up by name among the
     // columns of convergence.csv (empty where the exact field is not given).
     const auto error = [&errors](const std::string &name) {
@@ -371,6 +367,10 @@ namespace PolyFrac
                   ExcMessage(not_finite("The step to t = " + std::to_string(t),
                                         column,
                                         *value)));
+    // Rank 0 writes the file; the others have none, but checked the same
+    // values (the errors are MPI sums), so that every rank stops.
+    if (!time_series)
+      return;
     std::ostringstream out;
     out << step << ',' << std::setprecision(12) << t << ',' << time_step
         << std::setprecision(6) << ',' << cuts;

@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/expressions.h>
+#include <polyfrac/base/mpi.h>
 
 #include <cmath>
 #include <iostream>
@@ -24,7 +25,8 @@ namespace PolyFrac
   namespace
   {
     /** Throws, naming the entry of @p expression, if @p result, the value
-     * of @p component at @p p, is not finite. */
+     * of @p component at @p p, is not finite; under mpirun it stops every
+     * rank (raise_rank_local_error(): the point may be this rank's own). */
     template <int dim>
     void
     check_finite(const Expression<dim> &expression,
@@ -44,7 +46,7 @@ namespace PolyFrac
               << ". Fix the expression so that it is finite on the whole "
                  "domain (a division by zero, or the root or logarithm of "
                  "a negative number?).";
-      AssertThrow(false, ExcMessage(message.str()));
+      raise_rank_local_error(message.str());
     }
   } // namespace
 

@@ -1,9 +1,41 @@
 #include <polyfrac/base/mpi.h>
 
+#include <cstdlib>
+#include <iostream>
+#include <mutex>
+#include <sstream>
 #include <vector>
 
 namespace PolyFrac
 {
+  void
+  abort_every_rank(const std::string &why)
+  {
+    // One write: std::cerr is unbuffered, and the pieces of a chain of <<
+    // from two ranks would interleave on the terminal. One thread: two
+    // worker threads of a cell loop may fail at once.
+    static std::mutex                 one_thread;
+    const std::lock_guard<std::mutex> lock(one_thread);
+    std::ostringstream                message;
+    message << "\nPolyFrac stopped on rank " << this_mpi_rank(MPI_COMM_WORLD)
+            << " of " << n_mpi_ranks(MPI_COMM_WORLD) << ": " << why << '\n';
+    std::cerr << message.str() << std::flush;
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    std::abort();
+  }
+
+
+
+  void
+  raise_rank_local_error(const std::string &message)
+  {
+    if (n_mpi_ranks(MPI_COMM_WORLD) > 1)
+      abort_every_rank(message);
+    AssertThrow(false, ExcMessage(message));
+  }
+
+
+
   unsigned int
   n_ranks_on_this_node(const MPI_Comm communicator)
   {

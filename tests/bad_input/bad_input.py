@@ -12,6 +12,7 @@ the case's files, runs `polyfrac ARGS`, and checks
   refused before the mesh is built (stage "parse").
 
   bad_input.py --list                  the case names
+  bad_input.py --list-ranks N          the cases run under mpirun -np N
   bad_input.py run POLYFRAC CASE DIR   one case, in DIR (emptied first);
                                        exit status 77: skipped
   bad_input.py table POLYFRAC DIR      all cases, a markdown table of the
@@ -52,6 +53,18 @@ BOX_GEO = ("Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\n"
            "Physical Surface(100) = {1};\n")
 # The same box meshed 20 times finer along its sides (944 triangles).
 FINE_BOX_GEO = BOX_GEO.replace(", 0, 1};", ", 0, 0.1};")
+# A fractured poromechanical scene that runs on several ranks (no face
+# bubbles), two steps, no VTU (a failure in a later step must not leave
+# result files behind).
+POROMECHANICS_2_RANKS = (
+    "subsection Model\n  set Model = poromechanics\nend\n"
+    "subsection Fractures\n  set Segments = -0.5, 0 : 0.5, 0\nend\n"
+    "subsection Boundary conditions\n  set Dirichlet boundary ids = "
+    "0, 1, 2, 3\nend\n"
+    "subsection Time\n  set End time = 0.2\n  set Time step = 0.1\nend\n"
+    "subsection Flow\n  set Fracture source = 1e-6\n"
+    "  set Face bubbles = false\nend\n"
+    "subsection Output\n  set Write VTU = false\nend\n")
 CONTACT = "subsection Model\n  set Model = contact mechanics\nend\n"
 FLOW = "subsection Model\n  set Model = flow\nend\n"
 
@@ -64,14 +77,16 @@ def section(name, **entries):
 
 
 def case(input_text, expect, files=None, args=None, stage="parse", status=1,
-         absent=(), written=(), address_space=None, base=BASE_2D):
+         absent=(), written=(), address_space=None, base=BASE_2D, ranks=1):
     """One case: input_text (a sentence for the table), the message parts
     expected, the files written (name -> text or bytes; "scene.prm" gets the
     base scene in front), the arguments (default: scene.prm), the stage at
     which the input is refused (parse: before any output; level: after
     used_parameters.prm, before any result), the exit status, texts that
     must not appear, files the run must write, a limit of the address
-    space (bytes) to run out of memory."""
+    space (bytes) to run out of memory, the number of MPI ranks (several:
+    under mpirun, where a run that does not end within TIMEOUT_RANKS
+    seconds has hung)."""
     if files is None:
         files = {}
     files = dict(files)
@@ -80,7 +95,7 @@ def case(input_text, expect, files=None, args=None, stage="parse", status=1,
     return dict(input=input_text, expect=expect, files=files,
                 args=["scene.prm"] if args is None else args, stage=stage,
                 status=status, absent=absent, written=written,
-                address_space=address_space)
+                address_space=address_space, ranks=ranks)
 
 
 CASES = {
@@ -876,6 +891,51 @@ CASES = {
             "Exact solution", Matrix_pressure="1e300") + section(
             "Output", Write_VTU="false")},
         stage="level"),
+    # On 2 ranks, an error found by one rank only (an expression evaluated
+    # on its own cells) or after one rank's check used to hang: the other
+    # rank waited in a collective call while the first unwound through
+    # MUMPS's collective destructor.
+    "exact_contact_traction_not_finite_2_ranks": case(
+        "2 ranks, poromechanics: exact contact traction `1/0; 0`, found by "
+        "the rank that owns the fracture faces (was a hang)",
+        ["stopped on rank", "Entry <Exact solution/Contact traction> is not "
+         "finite"],
+        files={"scene.prm": POROMECHANICS_2_RANKS + section(
+            "Exact solution", Contact_traction="1/0; 0")},
+        stage="level", ranks=2),
+    "exact_jump_not_finite_2_ranks": case(
+        "2 ranks, poromechanics: exact displacement jump `1/0; 0` (was a "
+        "hang)",
+        ["stopped on rank", "Entry <Exact solution/Displacement jump> is not "
+         "finite"],
+        files={"scene.prm": POROMECHANICS_2_RANKS + section(
+            "Exact solution", Displacement_jump="1/0; 0")},
+        stage="level", ranks=2),
+    "exact_pressure_beyond_double_2_ranks": case(
+        "2 ranks, poromechanics: exact matrix pressure `1e300`, whose error "
+        "is not finite at the equilibrium step (was a hang: rank 0 alone "
+        "checked the time series)",
+        ["stopped on rank", "The step to t = 0.000000 gives err_pressure = ",
+         "not a finite number"],
+        files={"scene.prm": POROMECHANICS_2_RANKS + section(
+            "Exact solution", Matrix_pressure="1e300")},
+        stage="level", ranks=2),
+    "exact_fracture_pressure_beyond_double_2_ranks": case(
+        "2 ranks, poromechanics: exact fracture pressure `t*1e300`, not "
+        "finite in the error of the first step (was a hang)",
+        ["stopped on rank", "The step to t = 0.100000 gives "
+         "err_fracture_pressure = ", "not a finite number"],
+        files={"scene.prm": POROMECHANICS_2_RANKS + section(
+            "Exact solution", Fracture_pressure="t*1e300")},
+        stage="level", ranks=2),
+    "exact_displacement_beyond_double_2_ranks": case(
+        "2 ranks, poromechanics: exact displacement `t*1e300; 0` (was a "
+        "hang)",
+        ["stopped on rank", "The step to t = 0.100000 gives err_u = ",
+         "not a finite number"],
+        files={"scene.prm": POROMECHANICS_2_RANKS + section(
+            "Exact solution", Displacement="t*1e300; 0")},
+        stage="level", ranks=2),
     "flow_time_dependent_permeability": case(
         "`Model = flow`, `Flow/Permeability = 1e-15 * (1 + t)` (was "
         "evaluated at t = 0 only)",
@@ -1001,6 +1061,9 @@ CASES = {
 
 # The exit status of a skipped case (ctest's SKIP_RETURN_CODE).
 SKIPPED = 77
+# Seconds after which a run on several ranks counts as a hang: each such
+# case stops in a few seconds.
+TIMEOUT_RANKS = 120
 
 
 def prepare(name, directory):
@@ -1017,20 +1080,30 @@ def prepare(name, directory):
 
 
 def execute(program, name, directory):
-    """Runs case @p name in @p directory; returns (status, stdout, stderr)."""
+    """Runs case @p name in @p directory; returns (status, stdout, stderr),
+    the status None if a run on several ranks did not end (killed after
+    TIMEOUT_RANKS seconds)."""
     prepare(name, directory)
     environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                        OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    limit = CASES[name]["address_space"]
+    spec = CASES[name]
+    limit = spec["address_space"]
 
     def limit_address_space():
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
-    run = subprocess.run([os.path.abspath(program)] + CASES[name]["args"],
-                         cwd=directory, capture_output=True, text=True,
-                         env=environment, timeout=600,
+    command = [os.path.abspath(program)] + spec["args"]
+    if spec["ranks"] > 1:
+        # timeout(1) sends SIGTERM to mpirun, which passes it on to the
+        # ranks, and SIGKILL 20 s later; its status is then 124 or 137.
+        command = ["timeout", "--kill-after=20", str(TIMEOUT_RANKS),
+                   "mpirun", "-np", str(spec["ranks"]),
+                   "--oversubscribe"] + command
+    run = subprocess.run(command, cwd=directory, capture_output=True,
+                         text=True, env=environment, timeout=600,
                          preexec_fn=limit_address_space if limit else None)
-    return run.returncode, run.stdout, run.stderr
+    hung = spec["ranks"] > 1 and run.returncode in (124, 137)
+    return None if hung else run.returncode, run.stdout, run.stderr
 
 
 def problems(name, directory, status, stdout, stderr):
@@ -1038,7 +1111,10 @@ def problems(name, directory, status, stdout, stderr):
     spec = CASES[name]
     found = []
     text = stdout + stderr
-    if status != spec["status"]:
+    if status is None:
+        found.append("the run did not end within %d s (a hang)"
+                     % TIMEOUT_RANKS)
+    elif status != spec["status"]:
         found.append("exit status %d, expected %d" % (status, spec["status"]))
     for part in spec["expect"]:
         if part not in text:
@@ -1078,6 +1154,10 @@ def first_line(stdout, stderr):
 def main():
     if sys.argv[1:] == ["--list"]:
         print("\n".join(CASES))
+        return 0
+    if len(sys.argv) == 3 and sys.argv[1] == "--list-ranks":
+        print("\n".join(name for name, spec in CASES.items()
+                        if spec["ranks"] == int(sys.argv[2])))
         return 0
     if len(sys.argv) == 5 and sys.argv[1] == "run":
         program, name, directory = sys.argv[2], sys.argv[3], sys.argv[4]

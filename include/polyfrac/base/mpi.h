@@ -8,6 +8,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <string>
+
 namespace PolyFrac
 {
   using namespace dealii;
@@ -42,6 +44,27 @@ namespace PolyFrac
   {
     return this_mpi_rank(communicator) == 0;
   }
+
+  /**
+   * Prints why the run stops, naming this rank of MPI_COMM_WORLD, and stops
+   * every rank (MPI_Abort with the status 1). Called by the first rank
+   * that stops a run of several ranks: the others might otherwise wait for
+   * it forever.
+   */
+  [[noreturn]] void
+  abort_every_rank(const std::string &why);
+
+  /**
+   * Reports an error that this rank may have found alone, in its own part
+   * of the work (an expression evaluated on its own cells or faces): with
+   * one rank it throws ExcMessage(@p message), to be caught like any other
+   * error; under mpirun it stops every rank at once (abort_every_rank()).
+   * The other ranks may be waiting for this one in a collective call, and
+   * unwinding the stack would run collective destructors (MUMPS's) that
+   * they never reach: the run would hang instead of saying why it stopped.
+   */
+  [[noreturn]] void
+  raise_rank_local_error(const std::string &message);
 
   /**
    * The number of ranks of @p communicator that share this rank's node
