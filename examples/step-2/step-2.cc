@@ -352,15 +352,18 @@ namespace Step2
     const DoFMap<dim>          &dofs;
     const MechanicalState<dim> &state;
 
-    std::unique_ptr<FunctionParser<dim>> tresca_threshold;
+    std::unique_ptr<FrictionLaw<dim>> friction;
   };
 
 
-  // The constructor parses the Tresca threshold as the library does (an
-  // expression evaluated at the face centroids). For Coulomb friction the
-  // tangential condition involves the increment [[u − u^{n−1}]]_τ of the
-  // last load step, which ContactMechanics does not expose; with a single
-  // load step u^{n−1} = 0, and that is what this program supports.
+  // The constructor asks the library for the friction law of the parameter
+  // file, on the fracture faces of this mesh: its slip bound g_σ(b_n) is
+  // what the checks need, whichever law it is (Tresca's threshold, an
+  // expression evaluated at the face centroids; Coulomb's F [b_n]_+; ...).
+  // For laws of Coulomb's kind the tangential condition involves the
+  // increment [[u − u^{n−1}]]_τ of the last load step, which
+  // ContactMechanics does not expose; with a single load step u^{n−1} = 0,
+  // and that is what this program supports.
   template <int dim>
   ActiveSetCheck<dim>::ActiveSetCheck(const Parameters               &prm,
                                       const LevelDiscretization<dim> &level,
@@ -370,18 +373,18 @@ namespace Step2
     , network(*level.network)
     , dofs(*level.dofs)
     , state(state)
-    , tresca_threshold(make_expression<dim>("Contact/Tresca threshold",
-                                            prm.contact.tresca_threshold,
-                                            1,
-                                            prm.constants))
   {
-    AssertThrow(prm.contact.friction_law != FrictionLaw::coulomb ||
+    std::vector<Point<dim>> centroids;
+    for (const auto &fracture_face : network.fracture_faces)
+      centroids.push_back(geometry.faces[fracture_face.face].centroid);
+    friction = FrictionLaws::create(prm, centroids);
+    AssertThrow(!friction->slips_by_increments() ||
                   prm.contact.n_load_steps == 1,
-                ExcMessage("step-2 checks Coulomb friction with a single load "
-                           "step only (Contact/Number of load steps = 1): "
-                           "with several, the slip increment needs the "
-                           "previous step, which ContactMechanics keeps to "
-                           "itself."));
+                ExcMessage("step-2 checks " + friction->name() +
+                           " friction with a single load step only "
+                           "(Contact/Number of load steps = 1): with "
+                           "several, the slip increment needs the previous "
+                           "step, which ContactMechanics keeps to itself."));
   }
 
 
@@ -391,10 +394,10 @@ namespace Step2
   // (2μ + λ_L)/h_σ with h_σ the diameter of the face; a positive
   // `Contact/Complementarity parameter` replaces it. Then b_n and b_τ,
   // the threshold g, the states by the four cases of the introduction,
-  // and the residual R_σ = λ_σ − P(b_σ). For Coulomb friction and
-  // frictionless contact a face that is not in contact carries no friction
-  // (its tangential state is "free" and R_τ = λ_τ); for Tresca the
-  // tangential state is decided whatever the normal one.
+  // and the residual R_σ = λ_σ − P(b_σ). The law says whether a face
+  // carries no friction (its tangential state is "free" and R_τ = λ_τ):
+  // always for frictionless contact, out of contact for Coulomb friction;
+  // for Tresca the tangential state is decided whatever the normal one.
   template <int dim>
   FaceConditions<dim>
   ActiveSetCheck<dim>::evaluate(const unsigned int i,
@@ -402,8 +405,7 @@ namespace Step2
   {
     const FaceGeometry<dim> &face =
       geometry.faces[network.fracture_faces[i].face];
-    const Tensor<2, dim> Q   = network.frame(i);
-    const FrictionLaw    law = prm.contact.friction_law;
+    const Tensor<2, dim> Q = network.frame(i);
 
     FaceConditions<dim> c;
     c.lambda = Q * state.multipliers[i];
@@ -418,20 +420,14 @@ namespace Step2
       c.b_t[d] = c.lambda[d] + c.beta * c.jump[d];
     const double b_t_norm = c.b_t.norm();
 
-    if (law == FrictionLaw::tresca)
-      c.g = tresca_threshold->value(face.centroid);
-    else if (law == FrictionLaw::coulomb)
-      c.g = prm.contact.friction_coefficient * std::max(c.b_n, 0.);
-    else
-      c.g = 0;
+    c.g = friction->slip_bound(i, c.b_n);
 
     // The normal projection [b_n]_+.
     c.normal      = c.b_n > 0 ? NormalState::contact : NormalState::open;
     c.residual[0] = c.lambda[0] - std::max(c.b_n, 0.);
 
     // The tangential projection onto the disc B(0, g).
-    if (law == FrictionLaw::frictionless ||
-        (law == FrictionLaw::coulomb && c.normal == NormalState::open))
+    if (friction->is_free(c.normal == NormalState::contact))
       c.tangential = TangentialState::free;
     else
       c.tangential =
@@ -479,14 +475,13 @@ namespace Step2
       jump_scale = 1;
 
     // First the states as we see them, and whether ContactMechanics saw
-    // the same on each face. One caveat for Coulomb friction:
+    // the same on each face. One caveat for laws of Coulomb's kind:
     // ContactMechanics evaluates the states it reports after the last load
     // step has been accepted, that is with u^{n−1} = u and hence a zero
     // slip increment; a slip face then sits exactly on the border |b_τ| =
     // g, and its reported tangential state is decided by round-off. So for
-    // Coulomb we compare the normal states only.
-    const bool compare_tangential =
-      prm.contact.friction_law != FrictionLaw::coulomb;
+    // them we compare the normal states only.
+    const bool   compare_tangential = !friction->slips_by_increments();
     unsigned int n_open = 0, n_contact = 0, n_stick = 0, n_slip = 0, n_free = 0,
                  n_disagree = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
@@ -770,10 +765,8 @@ namespace Step2
     AssertThrow(prm.model == "contact mechanics",
                 ExcMessage("step-2 solves Model = contact mechanics; for "
                            "Model = elasticity see step-1."));
-    out << "Friction law: " << selection_name(prm.contact.friction_law);
-    if (prm.contact.friction_law == FrictionLaw::coulomb)
-      out << " (F = " << prm.contact.friction_coefficient << ")";
-    out << (prm.contact.bubbles ? "" : ", without bubbles") << std::endl
+    out << "Friction law: " << FrictionLaws::create<dim>(prm, {})->name()
+        << (prm.contact.bubbles ? "" : ", without bubbles") << std::endl
         << std::endl;
 
     std::vector<ConvergenceRow> rows;

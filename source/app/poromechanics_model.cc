@@ -256,8 +256,13 @@ namespace PolyFrac
                                            const double energy_scale)
   {
     elasticity.set_time(data.time);
-    const EnergyTerms terms = energy_balance.terms(
-      state, u_new, pressure, p_new, data, contact != nullptr);
+    const EnergyTerms terms =
+      energy_balance.terms(state,
+                           u_new,
+                           pressure,
+                           p_new,
+                           data,
+                           contact ? &contact->friction_law() : nullptr);
     const double residual = terms.residual(energy_scale);
     const double bound =
       10 * std::max(prm.nonlinear.coupling_tolerance, prm.nonlinear.tolerance);

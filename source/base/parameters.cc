@@ -717,23 +717,6 @@ namespace PolyFrac
     prm.leave_subsection();
 
     prm.enter_subsection("Contact");
-    prm.declare_entry(
-      "Friction law",
-      "Coulomb",
-      Patterns::Selection(selection_pattern<FrictionLaw>()),
-      "Friction on the fracture faces in contact. Tresca: the "
-      "threshold below, normal and tangential states "
-      "independent. Coulomb: quasi-static, threshold F lambda_n, "
-      "slip increments between load steps.");
-    prm.declare_entry("Friction coefficient",
-                      "0.57735",
-                      Patterns::Double(),
-                      "Coulomb friction coefficient F >= 0.");
-    prm.declare_entry("Tresca threshold",
-                      "1",
-                      Patterns::Anything(),
-                      "Tresca threshold g >= 0 (expression, evaluated at the "
-                      "face centroids).");
     prm.declare_entry("Bubbles",
                       "true",
                       Patterns::Bool(),
@@ -1083,6 +1066,15 @@ namespace PolyFrac
       "then read t > 0 ? F : 0. An Exact solution/Analytic solution gives "
       "the initial state itself, and no equilibrium is solved.");
     prm.leave_subsection();
+    // The entries that components add to the subsections (the friction
+    // laws to Contact).
+    for (const auto &[subsection, extensions] : parameter_extensions())
+      {
+        prm.enter_subsection(subsection);
+        for (const ParameterExtension &extension : extensions)
+          extension.declare(prm);
+        prm.leave_subsection();
+      }
   }
 
 
@@ -1480,15 +1472,6 @@ namespace PolyFrac
 
     prm->enter_subsection("Contact");
     const std::string cwhere = "In <" + file_name + ">, subsection <Contact>";
-    contact.friction_law =
-      parse_selection<FrictionLaw>(prm->get("Friction law"));
-    contact.friction_coefficient = prm->get_double("Friction coefficient");
-    AssertThrow(contact.friction_coefficient >= 0,
-                ExcMessage(cwhere +
-                           ": <Friction coefficient> must be >= 0, "
-                           "not " +
-                           prm->get("Friction coefficient") + "."));
-    contact.tresca_threshold = prm->get("Tresca threshold");
     contact.bubbles          = prm->get_bool("Bubbles");
     contact.split_bubbles    = prm->get("Bubble placement") == "split";
     {
@@ -1621,6 +1604,7 @@ namespace PolyFrac
 
     warn_unused_entries();
     check_expressions();
+    check_extensions();
     if (exact.analytic_solution != AnalyticSolution::none)
       {
         if (dim == 2)
@@ -1952,7 +1936,6 @@ namespace PolyFrac
         {"Fractures/Pressure", fractures.pressure, 1},
         {"Fractures/Traction", fractures.traction, dim},
         {"Initial stress/Stress", initial_stress, dim * dim},
-        {"Contact/Tresca threshold", contact.tresca_threshold, 1},
         {"Exact solution/Displacement", exact.displacement, dim},
         {"Exact solution/Displacement jump", exact.displacement_jump, dim},
         {"Exact solution/Contact traction", exact.contact_traction, dim},
@@ -2094,6 +2077,37 @@ namespace PolyFrac
 
 
   void
+  Parameters::check_extensions() const
+  {
+    for (const auto &[subsection, extensions] : parameter_extensions())
+      for (const ParameterExtension &extension : extensions)
+        read_subsection(subsection, extension.check);
+  }
+
+
+
+  void
+  Parameters::read_subsection(
+    const std::string &subsection,
+    const std::function<void(ParameterHandler &, const ParameterContext &)>
+      &read) const
+  {
+    prm->enter_subsection(subsection);
+    try
+      {
+        read(*prm, ParameterContext{file_name, dim, constants});
+      }
+    catch (...)
+      {
+        prm->leave_subsection();
+        throw;
+      }
+    prm->leave_subsection();
+  }
+
+
+
+  void
   Parameters::warn_unused_entries()
   {
     // Entries the chosen model ignores, warned about when set (differ
@@ -2114,13 +2128,13 @@ namespace PolyFrac
     };
     if (model == "elasticity")
       {
-        for (const std::string entry : {"Friction law",
-                                        "Friction coefficient",
-                                        "Tresca threshold",
-                                        "Bubbles",
-                                        "Complementarity parameter",
-                                        "Number of load steps"})
+        for (const std::string entry :
+             {"Bubbles", "Complementarity parameter", "Number of load steps"})
           warn_if_set("Contact", entry);
+        for (const ParameterExtension &extension :
+             parameter_extensions().at("Contact"))
+          for (const std::string &entry : extension.entries())
+            warn_if_set("Contact", entry);
         warn_if_set("Nonlinear solver", "Maximum iterations");
         warn_if_set("Nonlinear solver", "Tolerance");
         warn_if_set("Nonlinear solver", "Initial guess");
@@ -2130,12 +2144,18 @@ namespace PolyFrac
     else
       {
         warn_if_set("Fractures", "Traction");
-        const std::string law =
-          "Contact/Friction law = " + selection_name(contact.friction_law);
-        if (model != "flow" && contact.friction_law != FrictionLaw::tresca)
-          warn_if_set("Contact", "Tresca threshold", law);
-        if (model != "flow" && contact.friction_law != FrictionLaw::coulomb)
-          warn_if_set("Contact", "Friction coefficient", law);
+        // The entries the choices of the components leave unused (those
+        // of the friction laws not chosen).
+        if (model != "flow")
+          for (const auto &[subsection, extensions] : parameter_extensions())
+            for (const ParameterExtension &extension : extensions)
+              {
+                prm->enter_subsection(subsection);
+                const auto unused = extension.unused_entries(*prm);
+                prm->leave_subsection();
+                for (const auto &[entry, user] : unused)
+                  warn_if_set(subsection, entry, user);
+              }
         if (!contact.bubbles && solver.method == SolverMethod::amg)
           warnings.push_back(
             "Linear solver/Method = AMG condenses the contact Newton steps "

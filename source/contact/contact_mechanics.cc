@@ -30,8 +30,7 @@ namespace PolyFrac
     , network(network)
     , dofs(dofs)
     , elasticity(prm, geometry, network, dofs)
-    , friction_law(prm.contact.friction_law)
-    , friction_coefficient(prm.contact.friction_coefficient)
+    , friction(FrictionLaws::create(prm, fracture_face_centroids()))
   {
     const unsigned int n_faces = network.n_fracture_faces();
     for (unsigned int i = 0; i < n_faces; ++i)
@@ -42,13 +41,8 @@ namespace PolyFrac
                            "fracture (Fractures/Segments, Polygons or Gmsh "
                            "physical tags)."));
 
-    // β_σ: scale-aware (2μ + λ)/h_σ unless given; the Tresca threshold at
-    // the face centroid.
-    const auto g         = make_expression<dim>("Contact/Tresca threshold",
-                                        prm.contact.tresca_threshold,
-                                        1,
-                                        prm.constants);
-    double     scale_min = std::numeric_limits<double>::max(), scale_max = 0;
+    // β_σ: scale-aware (2μ + λ)/h_σ unless given.
+    double scale_min = std::numeric_limits<double>::max(), scale_max = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
       {
         const auto  &face = geometry.faces[network.fracture_faces[i].face];
@@ -57,19 +51,6 @@ namespace PolyFrac
         scale_min = std::min(scale_min, scale_aware);
         scale_max = std::max(scale_max, scale_aware);
         beta.push_back(prm.contact.beta > 0 ? prm.contact.beta : scale_aware);
-        threshold.push_back(
-          friction_law == FrictionLaw::tresca ? g->value(face.centroid) : 0.);
-        if (threshold.back() < 0)
-          {
-            std::ostringstream where;
-            where << face.centroid;
-            AssertThrow(false,
-                        ExcMessage("In <" + prm.file_name +
-                                   ">: Contact/Tresca threshold is negative (" +
-                                   std::to_string(threshold.back()) +
-                                   ") at the fracture face centred at " +
-                                   where.str() + "."));
-          }
       }
     // The solution does not depend on β, but the contact states are decided
     // by the sign of λ_n + β [[u]]_n: a β so large that β times the
@@ -233,6 +214,18 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::vector<Point<dim>>
+  ContactMechanics<dim>::fracture_face_centroids() const
+  {
+    std::vector<Point<dim>> centroids;
+    for (const auto &fracture_face : network.fracture_faces)
+      centroids.push_back(geometry.faces[fracture_face.face].centroid);
+    return centroids;
+  }
+
+
+
+  template <int dim>
   typename ContactMechanics<dim>::Residual
   ContactMechanics<dim>::residual(const Vector<double> &x,
                                   const double          load,
@@ -256,7 +249,7 @@ namespace PolyFrac
         const Tensor<2, dim> &Q      = face.frame;
         const Tensor<1, dim>  lambda = Q * face_multiplier(x, i);
         const Tensor<1, dim>  j      = Q * face_jump(x, i);
-        const Tensor<1, dim>  j_old  = friction_law == FrictionLaw::coulomb ?
+        const Tensor<1, dim>  j_old  = friction->slips_by_increments() ?
                                          Q * face_jump(previous_step, i) :
                                          Tensor<1, dim>();
         const double          b      = beta[i];
@@ -269,9 +262,7 @@ namespace PolyFrac
         const double b_t_norm = b_t.norm();
         const bool   in_contact =
           forced ? forced->normal[i] == NormalState::contact : b_n > 0;
-        const double g = friction_law == FrictionLaw::coulomb ?
-                           friction_coefficient * std::max(b_n, 0.) :
-                           threshold[i];
+        const double g = friction->slip_bound(i, b_n);
 
         // Local residual r = λ − (projections) and its generalised
         // derivatives M_λ = ∂r/∂λ, M_j = ∂r/∂[[u]] (local components).
@@ -290,10 +281,7 @@ namespace PolyFrac
             M_lambda[0][0] = 1;
           }
 
-        const bool frictionless_face =
-          friction_law == FrictionLaw::frictionless ||
-          (friction_law == FrictionLaw::coulomb && !in_contact);
-        if (frictionless_face)
+        if (friction->is_free(in_contact))
           {
             R.tangential[i] = TangentialState::free;
             for (unsigned int d = 1; d < dim; ++d)
@@ -339,10 +327,13 @@ namespace PolyFrac
                     M_lambda[d][e] = (d == e ? 1. : 0.) - P;
                     M_jump[d][e]   = -b * P;
                   }
-                if (friction_law == FrictionLaw::coulomb)
+                // dg = (∂g/∂b_n) (dλ_n + β d[[u]]_n).
+                if (const double slope_n =
+                      friction->slip_bound_derivative(i, b_n);
+                    slope_n != 0)
                   {
-                    M_lambda[d][0] = -friction_coefficient * hat[d];
-                    M_jump[d][0]   = -friction_coefficient * b * hat[d];
+                    M_lambda[d][0] = -slope_n * hat[d];
+                    M_jump[d][0]   = -slope_n * b * hat[d];
                   }
               }
           }
@@ -916,8 +907,7 @@ namespace PolyFrac
                             ExcMessage(
                               "The contact solver did not converge at load "
                               "factor " +
-                              std::to_string(load) + " (" +
-                              selection_name(friction_law) +
+                              std::to_string(load) + " (" + friction->name() +
                               "): Newton reached " +
                               std::to_string(prm.nonlinear.max_iterations) +
                               " iterations, after dividing the "

@@ -49,18 +49,8 @@ namespace PolyFrac
     , coupling(coupling)
     , elasticity(elasticity)
   {
-    const auto g = make_expression<dim>("Contact/Tresca threshold",
-                                        prm.contact.tresca_threshold,
-                                        1,
-                                        prm.constants);
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
-      {
-        jumps.push_back(jump(geometry, dofs, network, i));
-        tresca_threshold.push_back(
-          prm.contact.friction_law == FrictionLaw::tresca ?
-            g->value(geometry.faces[network.fracture_faces[i].face].centroid) :
-            0.);
-      }
+      jumps.push_back(jump(geometry, dofs, network, i));
     const types::global_dof_index n = dofs.n_displacement_dofs();
     DynamicSparsityPattern        pattern(n);
     // Distributed, each rank assembles its own polytopes (add_mechanics()
@@ -95,10 +85,10 @@ namespace PolyFrac
                             const Vector<double>       &p_before,
                             const Vector<double>       &p_after,
                             const FlowStepData         &data,
-                            const bool                  contact) const
+                            const FrictionLaw<dim>     *friction) const
   {
     EnergyTerms terms;
-    add_mechanics(before, after, p_after, contact, terms);
+    add_mechanics(before, after, p_after, friction, terms);
     add_flow(p_before, p_after, data, terms);
     return terms;
   }
@@ -110,7 +100,7 @@ namespace PolyFrac
   EnergyBalance<dim>::add_mechanics(const MechanicalState<dim> &before,
                                     const MechanicalState<dim> &after,
                                     const Vector<double>       &p_after,
-                                    const bool                  contact,
+                                    const FrictionLaw<dim>     *friction,
                                     EnergyTerms                &terms) const
   {
     const types::global_dof_index n  = dofs.n_displacement_dofs();
@@ -164,7 +154,7 @@ namespace PolyFrac
     R -= coupling.pressure_load(flow.cell_pressures(p_after),
                                 prm.flow.biot_coefficient,
                                 flow.fracture_pressures(p_after));
-    double contact_work = 0, friction = 0, traction_work = 0;
+    double contact_work = 0, friction_dissipation = 0, traction_work = 0;
     for (unsigned int i = 0; i < after.multipliers.size(); ++i)
       {
         const double measure =
@@ -173,7 +163,7 @@ namespace PolyFrac
         for (const auto &[block, w] : jumps[i])
           for (unsigned int d = 0; d < dim; ++d)
             R(dim * block + d) += measure * w * lambda[d];
-        if (!contact)
+        if (friction == nullptr)
           {
             Tensor<1, dim> jump_increment;
             for (const auto &[block, w] : jumps[i])
@@ -188,16 +178,13 @@ namespace PolyFrac
         double               slip         = 0;
         for (unsigned int d = 1; d < dim; ++d)
           slip += increment[d] * increment[d];
-        const double threshold =
-          prm.contact.friction_law == FrictionLaw::coulomb ?
-            prm.contact.friction_coefficient * local_lambda[0] :
-            tresca_threshold[i];
+        const double threshold = friction->slip_bound(i, local_lambda[0]);
         contact_work -= measure * local_lambda[0] * previous[0];
-        friction += measure * threshold * std::sqrt(slip);
+        friction_dissipation += measure * threshold * std::sqrt(slip);
       }
-    if (contact)
+    if (friction != nullptr)
       {
-        terms.dissipation.emplace_back("friction", friction);
+        terms.dissipation.emplace_back("friction", friction_dissipation);
         terms.dissipation.emplace_back("contact", contact_work);
       }
     else if (!after.multipliers.empty())

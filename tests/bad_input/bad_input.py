@@ -643,6 +643,27 @@ CASES = {
             "Contact", Friction_law="Tresca", Tresca_threshold="1",
             Friction_coefficient="0.6")},
         status=0),
+    "cohesion_under_coulomb": case(
+        "`Cohesion = 1e6` under `Friction law = Coulomb`: a warning, runs",
+        ["Warning: Contact/Cohesion is not used by Contact/Friction law = "
+         "Coulomb and is ignored"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Coulomb", Cohesion="1e6")},
+        status=0),
+    "cohesion_negative": case(
+        "`Friction law = Coulomb with cohesion`, `Cohesion = -1`",
+        ["subsection <Contact>: <Cohesion> must be a finite stress >= 0 (Pa), "
+         "not -1"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Coulomb with cohesion", Cohesion="-1")}),
+    "cohesion_not_finite": case(
+        "`Friction law = Coulomb with cohesion`, `Cohesion = 1e400` (inf): "
+        "refused by the entry's pattern",
+        ["The entry value 1e400 for the entry named Cohesion does not match "
+         "the given pattern"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Coulomb with cohesion",
+            Cohesion="1e400")}),
     "linear_solver_tolerance_zero": case(
         "`Linear solver/Tolerance = 0` (was accepted: an iterative solve "
         "can never reach it)",

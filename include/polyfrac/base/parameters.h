@@ -4,9 +4,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <polyfrac/base/parameter_extensions.h>
 #include <polyfrac/base/selection.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -48,16 +50,6 @@ namespace PolyFrac
     random,
     /** A sine map that bends the faces (Kershaw-like). */
     smooth
-  };
-  /** Contact/Friction law. */
-  enum class FrictionLaw
-  {
-    /** No tangential traction. */
-    frictionless,
-    /** The slip bound is the given threshold g. */
-    tresca,
-    /** The slip bound is F times the normal traction. */
-    coulomb
   };
   /** Exact solution/Analytic solution: a built-in poroelastic solution. */
   enum class AnalyticSolution
@@ -126,14 +118,6 @@ namespace PolyFrac
   {
     /** The names, in the order of the values. */
     static constexpr std::array<const char *, 2> names = {{"random", "smooth"}};
-  };
-  /** The names of FrictionLaw. */
-  template <>
-  struct SelectionNames<FrictionLaw>
-  {
-    /** The names, in the order of the values. */
-    static constexpr std::array<const char *, 3> names = {
-      {"frictionless", "Tresca", "Coulomb"}};
   };
   /** The names of AnalyticSolution. */
   template <>
@@ -381,15 +365,10 @@ namespace PolyFrac
       std::map<std::string, double> minimum_rates;
     } checks; /**< Convergence study/Maximum errors and Minimum rates. */
 
-    /** Contact (Model = contact mechanics). */
+    /** Contact (Model = contact mechanics); the friction law reads its own
+     * entries (FrictionLaws::create()). */
     struct ContactData
     {
-      /** Friction law. */
-      FrictionLaw friction_law;
-      /** Friction coefficient F (Coulomb). */
-      double friction_coefficient;
-      /** Tresca threshold g ≥ 0: a scalar expression. */
-      std::string tresca_threshold;
       /** Bubbles: whether the fracture faces carry bubbles. */
       bool bubbles;
       /** Bubble placement = split: half of each bubble on either side
@@ -574,9 +553,25 @@ namespace PolyFrac
       bool equilibrium_start;
     } time; /**< The subsection Time. */
 
+    /**
+     * Calls @p read with the parameter handler in the subsection
+     * @p subsection (entered) and the context of the entries' checks: for
+     * the components that read their own entries (ParameterExtension).
+     */
+    void
+    read_subsection(
+      const std::string &subsection,
+      const std::function<void(ParameterHandler &, const ParameterContext &)>
+        &read) const;
+
   private:
     static void
     declare(ParameterHandler &prm, const unsigned int dim);
+
+    /** Reads and checks the entries of the ParameterExtension objects
+     * (throws naming the file and the entry). */
+    void
+    check_extensions() const;
 
     /** Throws, naming the entry, if a load of the scene is not the one the
      * Exact solution/Analytic solution describes: a body force, initial

@@ -8,6 +8,7 @@
 
 #include <polyfrac/base/parameters.h>
 #include <polyfrac/contact/face_condensation.h>
+#include <polyfrac/contact/friction_law.h>
 #include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/physics/elasticity.h>
 
@@ -225,7 +226,18 @@ namespace PolyFrac
       return solution.size() - dirichlet.size();
     }
 
+    /** The friction law of the fracture faces. */
+    const FrictionLaw<dim> &
+    friction_law() const
+    {
+      return *friction;
+    }
+
   private:
+    /** The centroid of each fracture face. */
+    std::vector<Point<dim>>
+    fracture_face_centroids() const;
+
     /** Copies the displacement and multipliers of @p state (if it has
      * them) into #solution. */
     void
@@ -354,10 +366,10 @@ namespace PolyFrac
     const DoFMap<dim>          &dofs;
     Elasticity<dim>             elasticity;
 
-    FrictionLaw friction_law;
-    double      friction_coefficient;
-    /** β_σ and the Tresca threshold g_σ per fracture face. */
-    std::vector<double> beta, threshold;
+    /** The friction law of the fracture faces. */
+    std::unique_ptr<FrictionLaw<dim>> friction;
+    /** β_σ per fracture face. */
+    std::vector<double> beta;
     /** Coefficients of [[u]]_σ per fracture face. */
     std::vector<BlockCoefficients> jumps;
 

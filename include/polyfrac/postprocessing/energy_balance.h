@@ -7,6 +7,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/parameters.h>
+#include <polyfrac/contact/friction_law.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
@@ -88,9 +89,10 @@ namespace PolyFrac
     /**
      * The terms of the step from (@p before, @p p_before) to (@p after,
      * @p p_after), whose last flow solve used @p data (the time t^n, Δt,
-     * apertures and increment mobility). With @p contact, the multipliers
-     * of @p after are the contact tractions (contact work and friction);
-     * otherwise they are prescribed tractions (work of a load). The load
+     * apertures and increment mobility). With a @p friction law, the
+     * multipliers of @p after are the contact tractions (contact work and
+     * the friction dissipation g_σ |Δ[[u]]_τ|); without (null), they are
+     * prescribed tractions (work of a load). The load
      * is that of @p elasticity at the time it was last set to.
      */
     EnergyTerms
@@ -99,7 +101,7 @@ namespace PolyFrac
           const Vector<double>       &p_before,
           const Vector<double>       &p_after,
           const FlowStepData         &data,
-          const bool                  contact) const;
+          const FrictionLaw<dim>     *friction) const;
 
     /** The states carry normal face bubbles (MechanicalState::face_bubbles)
      * of @p face_bubbles (which must outlive this object): their stiffness
@@ -117,7 +119,7 @@ namespace PolyFrac
     add_mechanics(const MechanicalState<dim> &before,
                   const MechanicalState<dim> &after,
                   const Vector<double>       &p_after,
-                  const bool                  contact,
+                  const FrictionLaw<dim>     *friction,
                   EnergyTerms                &terms) const;
 
     /** Storage, stabilisation, viscous dissipation, exchange, sources and
@@ -143,8 +145,6 @@ namespace PolyFrac
     const Elasticity<dim>      &elasticity;
     /** The coefficients of [[u]]_σ per fracture face. */
     std::vector<BlockCoefficients> jumps;
-    /** The Tresca threshold g(x̄_σ) per fracture face (0 unless Tresca). */
-    std::vector<double> tresca_threshold;
     /** The face bubbles of the states, or none. */
     const FaceBubbles<dim> *bubbles = nullptr;
     /** A, the unconstrained elastic operator, and its pattern. */

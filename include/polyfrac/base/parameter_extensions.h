@@ -1,0 +1,72 @@
+#ifndef polyfrac_base_parameter_extensions_h
+#define polyfrac_base_parameter_extensions_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * What a check of a ParameterExtension knows of the scene besides its
+   * own entries.
+   */
+  struct ParameterContext
+  {
+    /** The parameter file, for the messages. */
+    std::string file_name;
+    /** The space dimension. */
+    unsigned int dim;
+    /** Expressions/Function constants. */
+    std::map<std::string, double> constants;
+  };
+
+  /**
+   * Entries that a component adds to a subsection of the parameter file
+   * from its own files (ASPECT's plugins, in deal.II idiom): the friction
+   * laws add theirs to the subsection Contact. Parameters declares them,
+   * checks them when it reads the file and warns about those the scene
+   * leaves unused, with the rest of the subsection and without knowing the
+   * component: base/ knows no physics.
+   */
+  struct ParameterExtension
+  {
+    /** The entries it declares. */
+    std::function<std::vector<std::string>()> entries;
+    /** Declares them (in the subsection, entered). */
+    std::function<void(ParameterHandler &)> declare;
+    /** Reads and checks them as the component will (in the subsection,
+     * entered); throws naming the file and the entry. */
+    std::function<void(ParameterHandler &, const ParameterContext &)> check;
+    /**
+     * The entries the choices made in the subsection (entered) leave
+     * unused, each with the choice that does (e.g. "Contact/Friction law
+     * = Coulomb"), for the warnings about entries that are set but unused.
+     */
+    std::function<std::vector<std::pair<std::string, std::string>>(
+      ParameterHandler &)>
+      unused_entries;
+  };
+
+  /**
+   * Adds @p extension to the subsection @p subsection. Called while the
+   * program starts, by the registration object of the component (e.g.
+   * FrictionLaws::Registration).
+   */
+  void
+  add_parameter_extension(const std::string        &subsection,
+                          const ParameterExtension &extension);
+
+  /** The extensions by subsection, each list in the order they were
+   * added. */
+  const std::map<std::string, std::vector<ParameterExtension>> &
+  parameter_extensions();
+} // namespace PolyFrac
+
+#endif
