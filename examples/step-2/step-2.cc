@@ -420,7 +420,8 @@ namespace Step2
       c.b_t[d] = c.lambda[d] + c.beta * c.jump[d];
     const double b_t_norm = c.b_t.norm();
 
-    c.g = friction->slip_bound(i, c.b_n);
+    c.g =
+      friction->slip_bound(i, c.b_n, state.slip.empty() ? 0. : state.slip[i]);
 
     // The normal projection [b_n]_+.
     c.normal      = c.b_n > 0 ? NormalState::contact : NormalState::open;

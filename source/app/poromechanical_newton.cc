@@ -673,6 +673,7 @@ namespace PolyFrac
     // (linearised there by the line search).
     after         = before;
     after.contact = states;
+    after.slip    = contact.slip_path(x);
     std::copy(x.begin(), x.begin() + n_u, after.displacement.begin());
     for (unsigned int i = 0; i < after.multipliers.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)

@@ -112,6 +112,7 @@ namespace PolyFrac
 
     solution.reinit(n);
     previous_step.reinit(n);
+    previous_slip.assign(n_faces, 0.);
   }
 
 
@@ -249,10 +250,14 @@ namespace PolyFrac
         const Tensor<2, dim> &Q      = face.frame;
         const Tensor<1, dim>  lambda = Q * face_multiplier(x, i);
         const Tensor<1, dim>  j      = Q * face_jump(x, i);
-        const Tensor<1, dim>  j_old  = friction->slips_by_increments() ?
-                                         Q * face_jump(previous_step, i) :
-                                         Tensor<1, dim>();
-        const double          b      = beta[i];
+        const Tensor<1, dim>  j_prev = Q * face_jump(previous_step, i);
+        const Tensor<1, dim>  j_old =
+          friction->slips_by_increments() ? j_prev : Tensor<1, dim>();
+        const double b = beta[i];
+        // The slip of the step and the slip path at x.
+        Tensor<1, dim> step_slip = j - j_prev;
+        step_slip[0]             = 0;
+        const double slip        = previous_slip[i] + step_slip.norm();
 
         // b_n, b_τ and the threshold g of §6.
         const double   b_n = lambda[0] + b * j[0];
@@ -262,7 +267,7 @@ namespace PolyFrac
         const double b_t_norm = b_t.norm();
         const bool   in_contact =
           forced ? forced->normal[i] == NormalState::contact : b_n > 0;
-        const double g = friction->slip_bound(i, b_n);
+        const double g = friction->slip_bound(i, b_n, slip);
 
         // Local residual r = λ − (projections) and its generalised
         // derivatives M_λ = ∂r/∂λ, M_j = ∂r/∂[[u]] (local components).
@@ -327,14 +332,21 @@ namespace PolyFrac
                     M_lambda[d][e] = (d == e ? 1. : 0.) - P;
                     M_jump[d][e]   = -b * P;
                   }
-                // dg = (∂g/∂b_n) (dλ_n + β d[[u]]_n).
+                // dg = (∂g/∂b_n) (dλ_n + β d[[u]]_n) + (∂g/∂s) t̂·d[[u]]_τ,
+                // t̂ the direction of the slip of the step.
                 if (const double slope_n =
-                      friction->slip_bound_derivative(i, b_n);
+                      friction->slip_bound_derivative(i, b_n, slip);
                     slope_n != 0)
                   {
                     M_lambda[d][0] = -slope_n * hat[d];
                     M_jump[d][0]   = -slope_n * b * hat[d];
                   }
+                if (const double slope_s =
+                      friction->slip_bound_slip_derivative(i, b_n, slip);
+                    slope_s != 0 && step_slip.norm() > 0)
+                  for (unsigned int e = 1; e < dim; ++e)
+                    M_jump[d][e] -=
+                      slope_s * hat[d] * step_slip[e] / step_slip.norm();
               }
           }
 
@@ -808,7 +820,7 @@ namespace PolyFrac
                                    SparseMatrix<double>       &jacobian)
   {
     set_solution(reference);
-    previous_step = solution;
+    set_previous_step(reference);
     Vector<double> own(solution.size());
     std::copy(x.begin(), x.begin() + own.size(), own.begin());
     const Residual R = residual(own, 1.);
@@ -857,7 +869,7 @@ namespace PolyFrac
                                const MechanicalState<dim> *guess)
   {
     set_solution(state);
-    previous_step = solution;
+    set_previous_step(state);
     singular_jacobian.clear();
     if (guess && prm.contact.n_load_steps == 1)
       set_solution(*guess);
@@ -892,6 +904,7 @@ namespace PolyFrac
                 const Residual R = residual(x, load);
                 states           = {R.normal, R.tangential};
                 solution         = x;
+                previous_slip    = slip_path(x);
                 previous_step    = x;
                 reached          = load;
                 singular_jacobian.clear();
@@ -956,6 +969,37 @@ namespace PolyFrac
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       state.multipliers.push_back(face_multiplier(solution, i));
     state.contact = states;
+    state.slip    = previous_slip;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::set_previous_step(const MechanicalState<dim> &state)
+  {
+    previous_step = solution;
+    previous_slip = state.slip;
+    previous_slip.resize(network.n_fracture_faces(), 0.);
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactMechanics<dim>::slip_path(const Vector<double> &x) const
+  {
+    Vector<double> own(solution.size());
+    std::copy(x.begin(), x.begin() + own.size(), own.begin());
+    std::vector<double> slip = previous_slip;
+    for (unsigned int i = 0; i < slip.size(); ++i)
+      {
+        Tensor<1, dim> step_slip =
+          network.frame(i) * (face_jump(own, i) - face_jump(previous_step, i));
+        step_slip[0] = 0;
+        slip[i] += step_slip.norm();
+      }
+    return slip;
   }
 
 

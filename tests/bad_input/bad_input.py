@@ -664,6 +664,30 @@ CASES = {
         files={"scene.prm": CONTACT + SEGMENT + section(
             "Contact", Friction_law="Coulomb with cohesion",
             Cohesion="1e400")}),
+    "dynamic_friction_above_static": case(
+        "`Friction law = linear slip weakening`, `Dynamic friction "
+        "coefficient = 0.7` above `Friction coefficient = 0.6`",
+        ["<Dynamic friction coefficient> must lie in [0, Friction "
+         "coefficient] = [0, 0.6], not 0.7"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="linear slip weakening",
+            Friction_coefficient="0.6", Dynamic_friction_coefficient="0.7")}),
+    "slip_weakening_distance_zero": case(
+        "`Friction law = linear slip weakening`, `Slip-weakening distance = "
+        "0`",
+        ["<Slip-weakening distance> must be a finite length > 0 (m), not 0"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="linear slip weakening",
+            **{"Slip-weakening distance": "0"})}),
+    "dynamic_friction_under_coulomb": case(
+        "`Dynamic friction coefficient = 0.3` under `Friction law = "
+        "Coulomb`: a warning, runs",
+        ["Warning: Contact/Dynamic friction coefficient is not used by "
+         "Contact/Friction law = Coulomb and is ignored"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Friction_law="Coulomb",
+            Dynamic_friction_coefficient="0.3")},
+        status=0),
     "linear_solver_tolerance_zero": case(
         "`Linear solver/Tolerance = 0` (was accepted: an iterative solve "
         "can never reach it)",

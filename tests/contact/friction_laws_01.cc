@@ -1,7 +1,8 @@
 // Checks every friction law through FrictionLaws::create(), chosen and set
-// by the entries of the subsection Contact: the slip bound g(b_n) against
-// its closed form, its derivative against a central difference of the
-// bound in contact (b_n > 0), whether a face out of contact is free and
+// by the entries of the subsection Contact: the slip bound g(b_n, s)
+// against its closed form, its derivatives in b_n and in the slip path s
+// against central differences of the bound in contact (b_n > 0, away from
+// the kink of slip weakening), whether a face out of contact is free and
 // whether slip counts in increments, and that a wrong coefficient is
 // refused naming the entry. The test fails (exit status) on any mismatch.
 
@@ -11,6 +12,7 @@
 
 #include "../tests.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -39,12 +41,12 @@ namespace
   /** A law and what it must be. */
   struct Case
   {
-    std::vector<std::string>                    settings;
-    std::string                                 name;
-    std::function<double(unsigned int, double)> bound;
-    bool                                        free_in_contact;
-    bool                                        free_when_open;
-    bool                                        increments;
+    std::vector<std::string>                            settings;
+    std::string                                         name;
+    std::function<double(unsigned int, double, double)> bound;
+    bool                                                free_in_contact;
+    bool                                                free_when_open;
+    bool                                                increments;
   };
 
   void
@@ -63,23 +65,34 @@ namespace
     AssertThrow(law->slips_by_increments() == expected.increments,
                 ExcInternalError());
     for (unsigned int face = 0; face < centroids.size(); ++face)
-      for (const double normal : {-1., 0.5, 2., 10.})
-        {
-          const double g = law->slip_bound(face, normal);
-          std::cout << " g(" << normal << ") = " << g;
-          AssertThrow(std::abs(g - expected.bound(face, normal)) <=
-                        1e-14 * (1 + std::abs(g)),
-                      ExcMessage(expected.name + ": wrong slip bound"));
-          if (normal <= 0)
-            continue;
-          const double h          = 1e-6 * normal;
-          const double difference = (law->slip_bound(face, normal + h) -
-                                     law->slip_bound(face, normal - h)) /
-                                    (2 * h);
-          AssertThrow(std::abs(law->slip_bound_derivative(face, normal) -
-                               difference) <= 1e-8,
-                      ExcMessage(expected.name + ": wrong derivative"));
-        }
+      for (const double slip : {0., 4e-4, 3e-3})
+        for (const double normal : {-1., 0.5, 2., 10.})
+          {
+            const double g = law->slip_bound(face, normal, slip);
+            std::cout << " g(" << normal << ", " << slip << ") = " << g;
+            AssertThrow(std::abs(g - expected.bound(face, normal, slip)) <=
+                          1e-14 * (1 + std::abs(g)),
+                        ExcMessage(expected.name + ": wrong slip bound"));
+            if (normal <= 0)
+              continue;
+            const double h         = 1e-6 * normal;
+            const double in_normal = (law->slip_bound(face, normal + h, slip) -
+                                      law->slip_bound(face, normal - h, slip)) /
+                                     (2 * h);
+            AssertThrow(
+              std::abs(law->slip_bound_derivative(face, normal, slip) -
+                       in_normal) <= 1e-8,
+              ExcMessage(expected.name + ": wrong derivative in b_n"));
+            const double k       = 1e-9;
+            const double below   = std::max(slip - k, 0.);
+            const double in_slip = (law->slip_bound(face, normal, slip + k) -
+                                    law->slip_bound(face, normal, below)) /
+                                   (slip + k - below);
+            AssertThrow(std::abs(
+                          law->slip_bound_slip_derivative(face, normal, slip) -
+                          in_slip) <= 1e-6 * (1 + std::abs(in_slip)),
+                        ExcMessage(expected.name + ": wrong derivative in s"));
+          }
     std::cout << std::endl;
   }
 
@@ -112,30 +125,51 @@ main(int argc, char **argv)
   const auto positive = [](const double b) { return std::max(b, 0.); };
   check({{"Friction law=frictionless"},
          "frictionless",
-         [](unsigned int, double) { return 0.; },
+         [](unsigned int, double, double) { return 0.; },
          true,
          true,
          false});
   check({{"Friction law=Tresca", "Tresca threshold=1 + x"},
          "Tresca",
-         [](unsigned int face, double) { return face == 0 ? 3. : 1.5; },
+         [](unsigned int face, double, double) { return face == 0 ? 3. : 1.5; },
          false,
          false,
          false});
   check({{"Friction law=Coulomb", "Friction coefficient=0.6"},
          "Coulomb",
-         [&](unsigned int, double b) { return 0.6 * positive(b); },
+         [&](unsigned int, double b, double) { return 0.6 * positive(b); },
          false,
          true,
          true});
-  check({{"Friction law=Coulomb with cohesion",
+  check(
+    {{"Friction law=Coulomb with cohesion",
+      "Friction coefficient=0.6",
+      "Cohesion=0.5"},
+     "Coulomb with cohesion",
+     [&](unsigned int, double b, double) { return 0.5 + 0.6 * positive(b); },
+     false,
+     true,
+     true});
+  // F = 0.6 - 0.2 min(s, 1e-3)/1e-3.
+  check({{"Friction law=linear slip weakening",
           "Friction coefficient=0.6",
-          "Cohesion=0.5"},
-         "Coulomb with cohesion",
-         [&](unsigned int, double b) { return 0.5 + 0.6 * positive(b); },
+          "Dynamic friction coefficient=0.4",
+          "Slip-weakening distance=1e-3"},
+         "linear slip weakening",
+         [&](unsigned int, double b, double s) {
+           return (0.6 - 0.2 * std::min(s, 1e-3) / 1e-3) * positive(b);
+         },
          false,
          true,
          true});
+  check_refused({"Friction law=linear slip weakening",
+                 "Dynamic friction coefficient=0.7"},
+                "<Dynamic friction coefficient> must lie in [0, Friction "
+                "coefficient] = [0, 0.57735], not 0.7");
+  check_refused({"Friction law=linear slip weakening",
+                 "Slip-weakening distance=0"},
+                "<Slip-weakening distance> must be a finite length > 0 (m), "
+                "not 0");
   check_refused({"Friction law=Coulomb with cohesion", "Cohesion=-1"},
                 "<Cohesion> must be a finite stress >= 0 (Pa), not -1");
   check_refused({"Friction law=Coulomb with cohesion",

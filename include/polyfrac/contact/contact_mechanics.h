@@ -233,7 +233,21 @@ namespace PolyFrac
       return *friction;
     }
 
+    /**
+     * The slip path s_σ per fracture face at the unknowns @p x (u and λ
+     * first; further entries are ignored): that of the state the last
+     * linearise() or solve() started from, plus |[[u − u^{n−1}]]_τ|
+     * (MechanicalState::slip).
+     */
+    std::vector<double>
+    slip_path(const Vector<double> &x) const;
+
   private:
+    /** #previous_step and #previous_slip from #solution and @p state, the
+     * state a step starts from. */
+    void
+    set_previous_step(const MechanicalState<dim> &state);
+
     /** The centroid of each fracture face. */
     std::vector<Point<dim>>
     fracture_face_centroids() const;
@@ -405,6 +419,8 @@ namespace PolyFrac
      * converged one (u^{n−1} of the Coulomb slip increment); solve() copies
      * them from and to its MechanicalState. */
     Vector<double> solution, previous_step;
+    /** The slip path s_σ per fracture face at #previous_step. */
+    std::vector<double> previous_slip;
     /** The contact states of the last converged load step. */
     ContactStates states;
     /** Multipliers and states to start from (start_from()). */

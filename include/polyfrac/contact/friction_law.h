@@ -19,8 +19,10 @@ namespace PolyFrac
   /**
    * The friction law of the fracture faces (doc/scheme.md §6): the slip
    * bound g_σ of the tangential condition λ_τ − P_{B(0, g_σ)}(b_τ) = 0 as
-   * a function of the normal b_n = λ_n + β [[u]]_n (positive in contact),
-   * its derivative for the generalised Jacobian, and two properties:
+   * a function of the normal b_n = λ_n + β [[u]]_n (positive in contact)
+   * and of the slip path s_σ (MechanicalState::slip, the slip of the step
+   * included: s_σ = s_σ^{n−1} + |[[u − u^{n−1}]]_τ|), its derivatives for
+   * the generalised Jacobian, and two properties:
    * whether a face out of contact is free, and whether b_τ is built on the
    * slip increment of the step. ContactMechanics (the residual and its
    * Jacobian) and EnergyBalance (the friction dissipation g_σ |Δ[[u]]_τ|)
@@ -53,14 +55,27 @@ namespace PolyFrac
     slips_by_increments() const = 0;
 
     /** The slip bound g_σ ≥ 0 of fracture face @p face at b_n = @p
-     * normal. */
+     * normal and the slip path s_σ = @p slip. */
     virtual double
-    slip_bound(const unsigned int face, const double normal) const = 0;
+    slip_bound(const unsigned int face,
+               const double       normal,
+               const double       slip) const = 0;
 
-    /** ∂g_σ/∂b_n of fracture face @p face at b_n = @p normal. */
+    /** ∂g_σ/∂b_n of fracture face @p face at (@p normal, @p slip). */
     virtual double
     slip_bound_derivative(const unsigned int face,
-                          const double       normal) const = 0;
+                          const double       normal,
+                          const double       slip) const = 0;
+
+    /** ∂g_σ/∂s_σ of fracture face @p face at (@p normal, @p slip): zero
+     * unless the bound depends on the slip path (slip weakening). */
+    virtual double
+    slip_bound_slip_derivative(const unsigned int,
+                               const double,
+                               const double) const
+    {
+      return 0;
+    }
   };
 
 

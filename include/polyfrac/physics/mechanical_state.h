@@ -74,6 +74,10 @@ namespace PolyFrac
     std::vector<Tensor<1, dim>> multipliers;
     /** The contact states per fracture face; empty without contact. */
     ContactStates contact;
+    /** The slip path s_σ = Σ |[[u^k − u^{k−1}]]_τ| of each fracture face over
+     * the accepted load and time steps (the history of slip-weakening
+     * friction); empty: zero on every face. */
+    std::vector<double> slip;
 
     /** Writes or reads the state with the boost archive @p archive
      * (Checkpoint). */
@@ -82,7 +86,7 @@ namespace PolyFrac
     serialize(Archive &archive, const unsigned int)
     {
       archive &displacement &face_bubbles &multipliers &contact.normal &contact
-        .tangential;
+        .tangential                                                    &slip;
     }
 
     /** The local values of cell @p c: its node sides, then its bubbles. */

@@ -35,9 +35,11 @@ namespace PolyFrac
       }
 
       double
-      slip_bound(const unsigned int face, const double normal) const override
+      slip_bound(const unsigned int face,
+                 const double       normal,
+                 const double       slip) const override
       {
-        return cohesion + Coulomb<dim>::slip_bound(face, normal);
+        return cohesion + Coulomb<dim>::slip_bound(face, normal, slip);
       }
 
     private:

@@ -33,13 +33,15 @@ namespace PolyFrac
       }
 
       double
-      slip_bound(const unsigned int, const double) const override
+      slip_bound(const unsigned int, const double, const double) const override
       {
         return 0;
       }
 
       double
-      slip_bound_derivative(const unsigned int, const double) const override
+      slip_bound_derivative(const unsigned int,
+                            const double,
+                            const double) const override
       {
         return 0;
       }

@@ -72,13 +72,17 @@ namespace PolyFrac
       }
 
       double
-      slip_bound(const unsigned int face, const double) const override
+      slip_bound(const unsigned int face,
+                 const double,
+                 const double) const override
       {
         return threshold[face];
       }
 
       double
-      slip_bound_derivative(const unsigned int, const double) const override
+      slip_bound_derivative(const unsigned int,
+                            const double,
+                            const double) const override
       {
         return 0;
       }

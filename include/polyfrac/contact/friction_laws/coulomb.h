@@ -11,7 +11,7 @@ namespace PolyFrac
    * Coulomb friction, quasi-static: the slip bound F [b_n]_+ (F =
    * Contact/Friction coefficient), a face out of contact free, slip
    * counted in increments between load or time steps. Laws of its kind
-   * (Coulomb with cohesion) derive from it.
+   * (Coulomb with cohesion, linear slip weakening) derive from it.
    */
   template <int dim>
   class Coulomb : public FrictionLaw<dim>
@@ -42,14 +42,26 @@ namespace PolyFrac
     }
 
     double
-    slip_bound(const unsigned int, const double normal) const override
+    slip_bound(const unsigned int,
+               const double normal,
+               const double) const override
     {
       return coefficient * std::max(normal, 0.);
     }
 
     /** F: the derivative in contact (b_n > 0), where the bound acts. */
     double
-    slip_bound_derivative(const unsigned int, const double) const override
+    slip_bound_derivative(const unsigned int,
+                          const double,
+                          const double) const override
+    {
+      return coefficient;
+    }
+
+  protected:
+    /** F (the static coefficient of laws that weaken). */
+    double
+    friction_coefficient() const
     {
       return coefficient;
     }
