@@ -110,8 +110,9 @@ namespace PolyFrac
       /** Declares the entries it owns (an entry is owned by one law; others
        * may read it). */
       std::function<void(ParameterHandler &)> declare;
-      /** The factories in 2D and 3D. */
+      /** The factory in 2D. */
       Factory<2> create_2d;
+      /** The factory in 3D. */
       Factory<3> create_3d;
     };
 
@@ -127,6 +128,7 @@ namespace PolyFrac
     template <template <int> class LawClass>
     struct Registration
     {
+      /** Registers LawClass under @p name (see Law for the arguments). */
       Registration(const std::string                             &name,
                    const std::string                             &description,
                    const std::vector<std::string>                &entries,
