@@ -202,9 +202,7 @@ namespace
   int
   stop(const std::string &why)
   {
-    int initialized = 0;
-    MPI_Initialized(&initialized);
-    if (initialized && Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    if (n_mpi_ranks(MPI_COMM_WORLD) > 1)
       abort_every_rank(why);
     std::cerr << "\nPolyFrac stopped: " << why << std::endl;
     return 1;

@@ -373,11 +373,8 @@ namespace Step2
     , network(*level.network)
     , dofs(*level.dofs)
     , state(state)
+    , friction(FrictionLaws::create(prm, geometry, network))
   {
-    std::vector<Point<dim>> centroids;
-    for (const auto &fracture_face : network.fracture_faces)
-      centroids.push_back(geometry.faces[fracture_face.face].centroid);
-    friction = FrictionLaws::create(prm, centroids);
     AssertThrow(!friction->slips_by_increments() ||
                   prm.contact.n_load_steps == 1,
                 ExcMessage("step-2 checks " + friction->name() +
@@ -420,8 +417,7 @@ namespace Step2
       c.b_t[d] = c.lambda[d] + c.beta * c.jump[d];
     const double b_t_norm = c.b_t.norm();
 
-    c.g =
-      friction->slip_bound(i, c.b_n, state.slip.empty() ? 0. : state.slip[i]);
+    c.g = friction->slip_bound(i, c.b_n, state.face_slip(i));
 
     // The normal projection [b_n]_+.
     c.normal      = c.b_n > 0 ? NormalState::contact : NormalState::open;

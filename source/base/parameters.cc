@@ -2126,15 +2126,19 @@ namespace PolyFrac
       prm->leave_subsection();
       defaults.leave_subsection();
     };
+    // Every entry that components add to @p subsection (ParameterExtension).
+    const auto warn_extensions_if_set = [&](const std::string &subsection) {
+      for (const ParameterExtension &extension :
+           parameter_extensions().at(subsection))
+        for (const std::string &entry : extension.entries())
+          warn_if_set(subsection, entry);
+    };
     if (model == "elasticity")
       {
         for (const std::string entry :
              {"Bubbles", "Complementarity parameter", "Number of load steps"})
           warn_if_set("Contact", entry);
-        for (const ParameterExtension &extension :
-             parameter_extensions().at("Contact"))
-          for (const std::string &entry : extension.entries())
-            warn_if_set("Contact", entry);
+        warn_extensions_if_set("Contact");
         warn_if_set("Nonlinear solver", "Maximum iterations");
         warn_if_set("Nonlinear solver", "Tolerance");
         warn_if_set("Nonlinear solver", "Initial guess");
@@ -2150,9 +2154,12 @@ namespace PolyFrac
           for (const auto &[subsection, extensions] : parameter_extensions())
             for (const ParameterExtension &extension : extensions)
               {
-                prm->enter_subsection(subsection);
-                const auto unused = extension.unused_entries(*prm);
-                prm->leave_subsection();
+                std::vector<std::pair<std::string, std::string>> unused;
+                read_subsection(subsection,
+                                [&](ParameterHandler &handler,
+                                    const ParameterContext &) {
+                                  unused = extension.unused_entries(handler);
+                                });
                 for (const auto &[entry, user] : unused)
                   warn_if_set(subsection, entry, user);
               }
@@ -2269,14 +2276,12 @@ namespace PolyFrac
                                         "Neumann boundary ids",
                                         "Neumann traction"})
           warn_if_set("Boundary conditions", entry);
-        for (const std::string entry : {"Friction law",
-                                        "Friction coefficient",
-                                        "Tresca threshold",
-                                        "Bubbles",
+        for (const std::string entry : {"Bubbles",
                                         "Bubble placement",
                                         "Complementarity parameter",
                                         "Number of load steps"})
           warn_if_set("Contact", entry);
+        warn_extensions_if_set("Contact");
         for (const std::string entry :
              {"Displacement", "Displacement jump", "Contact traction"})
           warn_if_set("Exact solution", entry);

@@ -20,6 +20,21 @@
 
 namespace PolyFrac
 {
+  namespace
+  {
+    /** The tangential components of @p local, a vector in the frame (n^+,
+     * τ) of a fracture face (the normal component 0). */
+    template <int dim>
+    Tensor<1, dim>
+    tangential_part(Tensor<1, dim> local)
+    {
+      local[0] = 0;
+      return local;
+    }
+  } // namespace
+
+
+
   template <int dim>
   ContactMechanics<dim>::ContactMechanics(const Parameters           &prm,
                                           const MeshGeometry<dim>    &geometry,
@@ -30,7 +45,7 @@ namespace PolyFrac
     , network(network)
     , dofs(dofs)
     , elasticity(prm, geometry, network, dofs)
-    , friction(FrictionLaws::create(prm, fracture_face_centroids()))
+    , friction(FrictionLaws::create(prm, geometry, network))
   {
     const unsigned int n_faces = network.n_fracture_faces();
     for (unsigned int i = 0; i < n_faces; ++i)
@@ -215,18 +230,6 @@ namespace PolyFrac
 
 
   template <int dim>
-  std::vector<Point<dim>>
-  ContactMechanics<dim>::fracture_face_centroids() const
-  {
-    std::vector<Point<dim>> centroids;
-    for (const auto &fracture_face : network.fracture_faces)
-      centroids.push_back(geometry.faces[fracture_face.face].centroid);
-    return centroids;
-  }
-
-
-
-  template <int dim>
   typename ContactMechanics<dim>::Residual
   ContactMechanics<dim>::residual(const Vector<double> &x,
                                   const double          load,
@@ -255,9 +258,9 @@ namespace PolyFrac
           friction->slips_by_increments() ? j_prev : Tensor<1, dim>();
         const double b = beta[i];
         // The slip of the step and the slip path at x.
-        Tensor<1, dim> step_slip = j - j_prev;
-        step_slip[0]             = 0;
-        const double slip        = previous_slip[i] + step_slip.norm();
+        const Tensor<1, dim> step_slip      = tangential_part(j - j_prev);
+        const double         step_slip_norm = step_slip.norm();
+        const double         slip           = previous_slip[i] + step_slip_norm;
 
         // b_n, b_τ and the threshold g of §6.
         const double   b_n = lambda[0] + b * j[0];
@@ -343,10 +346,10 @@ namespace PolyFrac
                   }
                 if (const double slope_s =
                       friction->slip_bound_slip_derivative(i, b_n, slip);
-                    slope_s != 0 && step_slip.norm() > 0)
+                    slope_s != 0 && step_slip_norm > 0)
                   for (unsigned int e = 1; e < dim; ++e)
                     M_jump[d][e] -=
-                      slope_s * hat[d] * step_slip[e] / step_slip.norm();
+                      slope_s * hat[d] * step_slip[e] / step_slip_norm;
               }
           }
 
@@ -993,12 +996,10 @@ namespace PolyFrac
     std::copy(x.begin(), x.begin() + own.size(), own.begin());
     std::vector<double> slip = previous_slip;
     for (unsigned int i = 0; i < slip.size(); ++i)
-      {
-        Tensor<1, dim> step_slip =
-          network.frame(i) * (face_jump(own, i) - face_jump(previous_step, i));
-        step_slip[0] = 0;
-        slip[i] += step_slip.norm();
-      }
+      slip[i] +=
+        tangential_part(network.frame(i) *
+                        (face_jump(own, i) - face_jump(previous_step, i)))
+          .norm();
     return slip;
   }
 

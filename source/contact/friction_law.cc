@@ -141,8 +141,30 @@ namespace PolyFrac
 
 
 
+    template <int dim>
+    std::unique_ptr<FrictionLaw<dim>>
+    create(const Parameters           &prm,
+           const MeshGeometry<dim>    &geometry,
+           const FractureNetwork<dim> &network)
+    {
+      std::vector<Point<dim>> centroids;
+      for (const auto &fracture_face : network.fracture_faces)
+        centroids.push_back(geometry.faces[fracture_face.face].centroid);
+      return create(prm, centroids);
+    }
+
+
+
     template std::unique_ptr<FrictionLaw<2>>
     create(const Parameters &, const std::vector<Point<2>> &);
+    template std::unique_ptr<FrictionLaw<2>>
+    create(const Parameters &,
+           const MeshGeometry<2> &,
+           const FractureNetwork<2> &);
+    template std::unique_ptr<FrictionLaw<3>>
+    create(const Parameters &,
+           const MeshGeometry<3> &,
+           const FractureNetwork<3> &);
     template std::unique_ptr<FrictionLaw<3>>
     create(const Parameters &, const std::vector<Point<3>> &);
   } // namespace FrictionLaws

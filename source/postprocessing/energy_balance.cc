@@ -179,9 +179,7 @@ namespace PolyFrac
         for (unsigned int d = 1; d < dim; ++d)
           slip += increment[d] * increment[d];
         const double threshold =
-          friction->slip_bound(i,
-                               local_lambda[0],
-                               after.slip.empty() ? 0. : after.slip[i]);
+          friction->slip_bound(i, local_lambda[0], after.face_slip(i));
         contact_work -= measure * local_lambda[0] * previous[0];
         friction_dissipation += measure * threshold * std::sqrt(slip);
       }

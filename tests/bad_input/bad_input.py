@@ -688,6 +688,15 @@ CASES = {
             "Contact", Friction_law="Coulomb",
             Dynamic_friction_coefficient="0.3")},
         status=0),
+    "slip_weakening_distance_under_flow": case(
+        "`Model = flow`, `Slip-weakening distance = 0.01` (was silently "
+        "ignored: the flow model's list of contact entries predated the "
+        "law)",
+        ["Warning: Contact/Slip-weakening distance is not used by Model = "
+         "flow and is ignored"],
+        files={"scene.prm": FLOW + section(
+            "Contact", **{"Slip-weakening distance": "0.01"})},
+        status=0),
     "linear_solver_tolerance_zero": case(
         "`Linear solver/Tolerance = 0` (was accepted: an iterative solve "
         "can never reach it)",

@@ -8,6 +8,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <polyfrac/base/exception_message.h>
 #include <polyfrac/contact/friction_law.h>
 
 #include "../tests.h"
@@ -107,11 +108,9 @@ namespace
       }
     catch (const ExceptionBase &e)
       {
-        std::ostringstream info;
-        e.print_info(info);
-        message = info.str();
+        message = exception_message(e);
       }
-    std::cout << "refused: " << Utilities::trim(message) << std::endl;
+    std::cout << "refused: " << message << std::endl;
     AssertThrow(message.find(expected) != std::string::npos,
                 ExcMessage("not refused as expected: " + message));
   }

@@ -248,10 +248,6 @@ namespace PolyFrac
     void
     set_previous_step(const MechanicalState<dim> &state);
 
-    /** The centroid of each fracture face. */
-    std::vector<Point<dim>>
-    fracture_face_centroids() const;
-
     /** Copies the displacement and multipliers of @p state (if it has
      * them) into #solution. */
     void

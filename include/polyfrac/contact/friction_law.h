@@ -6,6 +6,8 @@
 
 #include <polyfrac/base/parameter_extensions.h>
 #include <polyfrac/base/parameters.h>
+#include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_geometry.h>
 
 #include <functional>
 #include <memory>
@@ -157,6 +159,14 @@ namespace PolyFrac
     template <int dim>
     std::unique_ptr<FrictionLaw<dim>>
     create(const Parameters &prm, const std::vector<Point<dim>> &centroids);
+
+    /** The law that Contact/Friction law of @p prm chooses, for the
+     * fracture faces of @p network. */
+    template <int dim>
+    std::unique_ptr<FrictionLaw<dim>>
+    create(const Parameters           &prm,
+           const MeshGeometry<dim>    &geometry,
+           const FractureNetwork<dim> &network);
   } // namespace FrictionLaws
 } // namespace PolyFrac
 

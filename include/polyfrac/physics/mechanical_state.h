@@ -79,6 +79,13 @@ namespace PolyFrac
      * friction); empty: zero on every face. */
     std::vector<double> slip;
 
+    /** The slip path s_σ of fracture face @p i (0 if #slip is empty). */
+    double
+    face_slip(const unsigned int i) const
+    {
+      return slip.empty() ? 0. : slip[i];
+    }
+
     /** Writes or reads the state with the boost archive @p archive
      * (Checkpoint). */
     template <class Archive>

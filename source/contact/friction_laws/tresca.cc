@@ -1,5 +1,4 @@
-#include <deal.II/base/utilities.h>
-
+#include <polyfrac/base/exception_message.h>
 #include <polyfrac/base/expressions.h>
 #include <polyfrac/contact/friction_law.h>
 
@@ -33,11 +32,9 @@ namespace PolyFrac
           }
         catch (const ExceptionBase &e)
           {
-            std::ostringstream info;
-            e.print_info(info);
             AssertThrow(false,
                         ExcMessage("In <" + context.file_name +
-                                   ">: " + Utilities::trim(info.str())));
+                                   ">: " + exception_message(e)));
           }
         for (const Point<dim> &centroid : centroids)
           {
