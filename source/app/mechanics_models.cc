@@ -1,6 +1,10 @@
 #include <polyfrac/app/flow_model.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/base/exception_message.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
 
 #include <iomanip>
 
@@ -16,6 +20,34 @@ namespace PolyFrac
       MultiplierField<dim> field;
     };
   } // namespace
+
+
+
+  template <int dim>
+  void
+  summarise_contact_states(const MeshGeometry<dim>    &geometry,
+                           const FractureNetwork<dim> &network,
+                           const MechanicalState<dim> &state,
+                           StepReport                 &report)
+  {
+    if (network.n_fracture_faces() == 0)
+      return;
+    report.n_open = report.n_stick = report.n_slip = 0;
+    report.open_area = report.slip_area = 0;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const double measure =
+          geometry.faces[network.fracture_faces[i].face].measure;
+        const bool open = state.contact.normal[i] == NormalState::open;
+        const bool slip = state.contact.tangential[i] == TangentialState::slip;
+        *report.n_open += open;
+        *report.n_stick +=
+          state.contact.tangential[i] == TangentialState::stick;
+        *report.n_slip += slip;
+        *report.open_area += open * measure;
+        *report.slip_area += slip * measure;
+      }
+  }
 
 
 
@@ -131,16 +163,82 @@ namespace PolyFrac
 
 
   template <int dim>
-  StepReport
-  ContactMechanicsModel<dim>::step(const double,
-                                   const double,
-                                   std::ostream &out)
+  std::optional<StepReport>
+  ContactMechanicsModel<dim>::start_in_equilibrium(std::ostream &out)
   {
+    if (!is_time_dependent())
+      return {};
+    out << "Equilibrium at t = 0:" << std::endl;
+    contact.set_loads(0, Vector<double>());
     contact.solve(state, out);
     StepReport report;
     report.newton_iterations = contact.n_newton_iterations();
-    out << "Newton iterations: " << *report.newton_iterations << std::endl;
+    summarise_contact_states(*discretization.geometry,
+                             *discretization.network,
+                             state,
+                             report);
     return report;
+  }
+
+
+
+  template <int dim>
+  StepReport
+  ContactMechanicsModel<dim>::step(const double,
+                                   const double  t_new,
+                                   std::ostream &out)
+  {
+    StepReport         report;
+    const unsigned int iterations_before = contact.n_newton_iterations();
+    if (!is_time_dependent())
+      contact.solve(state, out);
+    else
+      try
+        {
+          contact.set_loads(t_new, Vector<double>());
+          contact.quasi_static_step(state, out);
+        }
+      catch (const QuasiStaticInstability &instability)
+        {
+          report.converged                = false;
+          report.failure                  = instability.what();
+          report.quasi_static_instability = true;
+          return report;
+        }
+      catch (const std::exception &failure)
+        {
+          report.converged = false;
+          report.failure   = exception_message(failure);
+          return report;
+        }
+    report.newton_iterations =
+      contact.n_newton_iterations() - iterations_before;
+    out << "Newton iterations: " << *report.newton_iterations << std::endl;
+    summarise_contact_states(*discretization.geometry,
+                             *discretization.network,
+                             state,
+                             report);
+    return report;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanicsModel<dim>::save_state(std::ostream &out) const
+  {
+    boost::archive::binary_oarchive archive(out);
+    archive << state << contact;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanicsModel<dim>::load_state(std::istream &in)
+  {
+    boost::archive::binary_iarchive archive(in);
+    archive >> state >> contact;
   }
 
 
@@ -186,7 +284,12 @@ namespace PolyFrac
   Vector<float>
   ContactMechanicsModel<dim>::error_indicators() const
   {
-    return contact.operator_elasticity().error_indicators(state);
+    // The faces carry the multiplier and the fracture traction.
+    const Elasticity<dim> &elasticity = contact.operator_elasticity();
+    MechanicalState<dim>   exerted    = state;
+    for (unsigned int i = 0; i < exerted.multipliers.size(); ++i)
+      exerted.multipliers[i] += elasticity.prescribed_traction(i);
+    return elasticity.error_indicators(exerted);
   }
 
 
@@ -235,6 +338,16 @@ namespace PolyFrac
 
 
 
+  template void
+  summarise_contact_states(const MeshGeometry<2> &,
+                           const FractureNetwork<2> &,
+                           const MechanicalState<2> &,
+                           StepReport &);
+  template void
+  summarise_contact_states(const MeshGeometry<3> &,
+                           const FractureNetwork<3> &,
+                           const MechanicalState<3> &,
+                           StepReport &);
   template class ElasticityModel<2>;
   template class ElasticityModel<3>;
   template class ContactMechanicsModel<2>;

@@ -1,3 +1,4 @@
+#include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/poromechanics_model.h>
 #include <polyfrac/base/anderson_acceleration.h>
 #include <polyfrac/base/progress_line.h>
@@ -729,23 +730,14 @@ namespace PolyFrac
     const auto &geometry = *discretization.geometry;
     if (network.n_fracture_faces() == 0)
       return;
-    report.n_open = report.n_stick = report.n_slip = 0;
-    report.open_area = report.slip_area = 0;
-    const std::vector<double> d         = apertures(state);
-    const std::vector<double> p_f       = flow.fracture_pressures(pressure);
+    summarise_contact_states(geometry, network, state, report);
+    const std::vector<double> d    = apertures(state);
+    const std::vector<double> p_f  = flow.fracture_pressures(pressure);
     double                    area = 0, aperture = 0, mean_p = 0;
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
         const double measure =
           geometry.faces[network.fracture_faces[i].face].measure;
-        const bool open = state.contact.normal[i] == NormalState::open;
-        const bool slip = state.contact.tangential[i] == TangentialState::slip;
-        *report.n_open += open;
-        *report.n_stick +=
-          state.contact.tangential[i] == TangentialState::stick;
-        *report.n_slip += slip;
-        *report.open_area += open * measure;
-        *report.slip_area += slip * measure;
         area += measure;
         aperture += measure * d[i];
         mean_p += measure * p_f[i];

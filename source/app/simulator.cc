@@ -115,6 +115,32 @@ namespace PolyFrac
 
   namespace
   {
+    /** Reports to @p out that @p level ends at t = @p t_old: its step to
+     * @p t_new found no equilibrium (a quasi-static instability, @p
+     * report) however often it was cut. */
+    void
+    end_at_instability(const unsigned int level,
+                       const double       t_old,
+                       const double       t_new,
+                       const StepReport  &report,
+                       std::ostream      &out)
+    {
+      const auto precision = out.precision(10);
+      out << "Quasi-static instability: level " << level
+          << " has no equilibrium beyond t = " << t_old
+          << " (the step to t = " << t_new
+          << " failed after the time step was halved until it "
+          << "could not be halved again: " << report.failure
+          << ") A slip-weakening patch has reached the peak load it can "
+             "carry; the rupture would go on dynamically, which a "
+             "quasi-static model does not follow. The level ends at its last "
+             "equilibrium, t = "
+          << t_old << ", written to the output files." << std::endl;
+      out.precision(precision);
+    }
+
+
+
     DataOutBase::VtkFlags::ZlibCompressionLevel
     compression_level(const VtuCompression compression)
     {
@@ -686,9 +712,11 @@ namespace PolyFrac
                             TimerOutput       &timer,
                             std::ostream      &out)
   {
-    const auto output_state = [&](const double t) {
+    std::optional<double> written;
+    const auto            output_state = [&](const double t) {
       TimerOutput::Scope section(timer, "output");
       output.write_state(model, t);
+      written = t;
     };
 
     if (!model.is_time_dependent())
@@ -767,6 +795,13 @@ namespace PolyFrac
         }
         if (!report.converged)
           {
+            if (report.quasi_static_instability && !stepping.may_cut())
+              {
+                end_at_instability(level, t_old, t_new, report, out);
+                if (written != t_old)
+                  output_state(t_old);
+                break;
+              }
             stepping.cut(report.failure, out);
             continue;
           }

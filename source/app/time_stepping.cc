@@ -61,9 +61,12 @@ namespace PolyFrac
     std::ostringstream what;
     what << "The step from t = " << time.get_current_time()
          << " to t = " << time.get_next_time() << " failed: " << failure;
-    AssertThrow(cuts_in_a_row <= 10,
+    AssertThrow(cuts_in_a_row <= max_cuts,
                 ExcMessage(what.str() +
-                           " It failed after halving the time step 10 times; "
+                           " It failed after halving the time "
+                           "step " +
+                           std::to_string(max_cuts) +
+                           " times; "
                            "the last converged state, at the start of this "
                            "step, is in the output files."));
     out << what.str() << " Halving the time step." << std::endl;

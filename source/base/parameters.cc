@@ -573,8 +573,17 @@ namespace PolyFrac
     prm.declare_entry("Traction",
                       zero_vector(dim),
                       Patterns::Anything(),
-                      "Prescribed multiplier lambda = -T+ in global components "
-                      "(Model = elasticity), expressions separated by ';'.");
+                      "A traction t on the fracture faces in global "
+                      "components (expressions in x, y[, z], t separated by "
+                      "';'), a load like Pressure (t = p_f n). Model = "
+                      "elasticity: the prescribed multiplier lambda = -T+. "
+                      "Model = contact mechanics: a change of the fault "
+                      "traction (PyLith's traction perturbation): the "
+                      "multiplier lambda that the friction law bounds is "
+                      "what the rock exerts minus t, so that t = (0, -tau) "
+                      "on a fracture along x raises the shear stress of the "
+                      "locked fracture by tau. Ignored by flow and "
+                      "poromechanics.");
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
@@ -743,9 +752,22 @@ namespace PolyFrac
       "Number of load steps",
       "1",
       Patterns::Integer(1),
-      "Step k scales body force, Dirichlet and Neumann data and "
-      "p_f by k/N (not the friction data). A continuation for "
-      "Tresca and frictionless; quasi-static steps for Coulomb.");
+      "Step k scales body force, initial stress, Dirichlet and Neumann "
+      "data, p_f and the fracture traction by k/N (not the friction "
+      "data). A continuation for Tresca and frictionless; quasi-static "
+      "steps for Coulomb. 1 with Quasi-static time steps (the time steps "
+      "are the load steps).");
+    prm.declare_entry(
+      "Quasi-static time steps",
+      "false",
+      Patterns::Bool(),
+      "true: Model = contact mechanics steps from t = 0 to Time/End time "
+      "(Time/Time step, Adaptive, Output times, Checkpoint interval), each "
+      "step in equilibrium with the loads at its time (expressions in t), "
+      "the slip history carried from step to step (Coulomb, slip "
+      "weakening). A step without equilibrium is cut; where equilibrium "
+      "ends on slip-weakening faces the run stops there with a "
+      "'quasi-static instability' report. false: one static solve.");
     prm.leave_subsection();
 
     prm.enter_subsection("Flow");
@@ -1495,7 +1517,16 @@ namespace PolyFrac
                                  beta + ">."));
         }
     }
-    contact.n_load_steps = prm->get_integer("Number of load steps");
+    contact.n_load_steps       = prm->get_integer("Number of load steps");
+    contact.quasi_static_steps = prm->get_bool("Quasi-static time steps");
+    AssertThrow(!contact.quasi_static_steps || contact.n_load_steps == 1,
+                ExcMessage(cwhere + ": <Number of load steps> = " +
+                           std::to_string(contact.n_load_steps) +
+                           " with <Quasi-static time steps> = true: the "
+                           "time steps are the load steps (each one in "
+                           "equilibrium with the loads at its time); set "
+                           "Number of load steps = 1 and refine Time/Time "
+                           "step instead."));
     prm->leave_subsection();
 
     read_flow();
@@ -2107,6 +2138,15 @@ namespace PolyFrac
 
 
 
+  bool
+  Parameters::is_time_dependent() const
+  {
+    return model == "flow" || model == "poromechanics" ||
+           (model == "contact mechanics" && contact.quasi_static_steps);
+  }
+
+
+
   void
   Parameters::warn_unused_entries()
   {
@@ -2135,8 +2175,10 @@ namespace PolyFrac
     };
     if (model == "elasticity")
       {
-        for (const std::string entry :
-             {"Bubbles", "Complementarity parameter", "Number of load steps"})
+        for (const std::string entry : {"Bubbles",
+                                        "Complementarity parameter",
+                                        "Number of load steps",
+                                        "Quasi-static time steps"})
           warn_if_set("Contact", entry);
         warn_extensions_if_set("Contact");
         warn_if_set("Nonlinear solver", "Maximum iterations");
@@ -2147,7 +2189,13 @@ namespace PolyFrac
       }
     else
       {
-        warn_if_set("Fractures", "Traction");
+        // A load of elasticity and contact mechanics only: the other
+        // models ignore it (Elasticity adds what it is given).
+        if (model != "contact mechanics")
+          {
+            warn_if_set("Fractures", "Traction");
+            fractures.traction = zero_vector(dim);
+          }
         // The entries the choices of the components leave unused (those
         // of the friction laws not chosen).
         if (model != "flow")
@@ -2194,7 +2242,7 @@ namespace PolyFrac
         warn_if_set("Exact solution", "Matrix pressure");
         warn_if_set("Exact solution", "Fracture pressure");
       }
-    if (model != "flow" && model != "poromechanics")
+    if (!is_time_dependent())
       for (const std::string entry : {"End time",
                                       "Time step",
                                       "Refine time step with mesh",
@@ -2204,12 +2252,16 @@ namespace PolyFrac
                                       "Maximum steps",
                                       "Equilibrium start"})
         warn_if_set("Time", entry, "a static Model = " + model);
-    if (model != "flow" && model != "poromechanics")
+    if (!is_time_dependent())
       warn_if_set("Output",
                   "Checkpoint interval",
                   "a static Model = " + model + " (one step, no checkpoint)");
-    if (model == "flow")
+    if (model == "flow" || model == "contact mechanics")
       warn_if_set("Time", "Equilibrium start");
+    if (model == "poromechanics")
+      warn_if_set("Contact",
+                  "Quasi-static time steps",
+                  "Model = poromechanics (its steps are in time anyway)");
     if (exact.analytic_solution != AnalyticSolution::none)
       warn_if_set("Flow",
                   "Initial pressure",
@@ -2245,7 +2297,7 @@ namespace PolyFrac
       {
         if (model == "elasticity" || model == "contact mechanics")
           warn_if_set("Fractures", "Pressure", "a scene without fractures");
-        if (model == "elasticity")
+        if (model == "elasticity" || model == "contact mechanics")
           warn_if_set("Fractures", "Traction", "a scene without fractures");
       }
     if (model == "flow" || model == "poromechanics")
@@ -2279,7 +2331,8 @@ namespace PolyFrac
         for (const std::string entry : {"Bubbles",
                                         "Bubble placement",
                                         "Complementarity parameter",
-                                        "Number of load steps"})
+                                        "Number of load steps",
+                                        "Quasi-static time steps"})
           warn_if_set("Contact", entry);
         warn_extensions_if_set("Contact");
         for (const std::string entry :

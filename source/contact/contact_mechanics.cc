@@ -902,15 +902,8 @@ namespace PolyFrac
               }
             if (newton(load, reached > 0, x, out))
               {
-                // The states of the converged step, with the slip
-                // increment from the previous step (Coulomb).
-                const Residual R = residual(x, load);
-                states           = {R.normal, R.tangential};
-                solution         = x;
-                previous_slip    = slip_path(x);
-                previous_step    = x;
-                reached          = load;
-                singular_jacobian.clear();
+                accept(x, load);
+                reached = load;
               }
             else
               {
@@ -949,6 +942,115 @@ namespace PolyFrac
           }
       }
 
+    finish(state, out);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::quasi_static_step(MechanicalState<dim> &state,
+                                           std::ostream         &out)
+  {
+    set_solution(state);
+    set_previous_step(state);
+    singular_jacobian.clear();
+    Vector<double> x = solution;
+    if (!newton(1., true, x, out))
+      {
+        std::ostringstream what;
+        what << "no equilibrium found from the state of the previous step "
+                "(Newton reached "
+             << prm.nonlinear.max_iterations
+             << " iterations or a singular Jacobian, " << friction->name()
+             << ").";
+        const unsigned int n_weakening = n_weakening_faces(state);
+        if (n_weakening > 0)
+          throw QuasiStaticInstability(what.str() + " " +
+                                         std::to_string(n_weakening) +
+                                         " faces slip on a weakening "
+                                         "friction law: a quasi-static "
+                                         "instability is likely.",
+                                       n_weakening);
+        AssertThrow(false, ExcMessage(what.str()));
+      }
+    check_slip_increments(x, state);
+    accept(x, 1.);
+    finish(state, out);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::check_slip_increments(
+    const Vector<double>       &x,
+    const MechanicalState<dim> &state) const
+  {
+    const std::vector<double> slip = slip_path(x);
+    for (unsigned int i = 0; i < slip.size(); ++i)
+      {
+        const double before  = state.face_slip(i);
+        const double allowed = friction->maximum_slip_increment(before);
+        if (slip[i] - before > allowed)
+          {
+            std::ostringstream what;
+            what << "the step slipped " << slip[i] - before
+                 << " on fracture face " << i << " (at "
+                 << geometry.faces[network.fracture_faces[i].face].centroid
+                 << "), more than the " << allowed << " that "
+                 << friction->name()
+                 << " allows a step (it may have jumped past the peak load "
+                    "of the slipping patch onto another equilibrium); "
+                 << n_weakening_faces(state)
+                 << " faces slip on the weakening law.";
+            throw QuasiStaticInstability(what.str(), n_weakening_faces(state));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::accept(const Vector<double> &x, const double load)
+  {
+    // The states of the converged step, with the slip increment from the
+    // previous step (Coulomb).
+    const Residual R = residual(x, load);
+    states           = {R.normal, R.tangential};
+    solution         = x;
+    previous_slip    = slip_path(x);
+    previous_step    = x;
+    singular_jacobian.clear();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactMechanics<dim>::n_weakening_faces(
+    const MechanicalState<dim> &state) const
+  {
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < state.contact.tangential.size(); ++i)
+      if (state.contact.tangential[i] == TangentialState::slip)
+        {
+          const Tensor<1, dim> lambda = network.frame(i) * state.multipliers[i];
+          n += friction->slip_bound_slip_derivative(i,
+                                                    lambda[0],
+                                                    state.face_slip(i)) < 0;
+        }
+    return n;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::finish(MechanicalState<dim> &state,
+                                std::ostream         &out) const
+  {
     if (n_krylov_fallbacks > 0)
       out << "  " << n_krylov_fallbacks << " condensed steps fell back to "
           << (dofs.is_distributed() ? "MUMPS" : "UMFPACK")

@@ -272,7 +272,7 @@ namespace PolyFrac
     else
       assemble_cells(constraints, matrix, rhs, make_matrix);
 
-    assemble_face_loads(constraints, rhs, true);
+    assemble_face_loads(constraints, rhs);
     if (dofs.is_distributed())
       Utilities::MPI::sum(rhs, dofs.get_communicator(), rhs);
   }
@@ -288,7 +288,7 @@ namespace PolyFrac
     none.close();
     Vector<double> loads(system_rhs.size());
     assemble_cells(none, system_matrix, loads);
-    assemble_face_loads(none, loads, false);
+    assemble_face_loads(none, loads);
     add_over_ranks(loads, system_rhs);
   }
 
@@ -311,7 +311,7 @@ namespace PolyFrac
     Vector<double> loads(system_rhs.size());
     for (types::global_dof_index i = 0; i < cell_loads.size(); ++i)
       loads(i) = cell_loads(i);
-    assemble_face_loads(none, loads, false);
+    assemble_face_loads(none, loads);
     add_over_ranks(loads, system_rhs);
   }
 
@@ -331,10 +331,8 @@ namespace PolyFrac
 
   template <int dim>
   void
-  Elasticity<dim>::assemble_face_loads(
-    const AffineConstraints<double> &c,
-    Vector<double>                  &system_rhs,
-    const bool                       with_prescribed_traction) const
+  Elasticity<dim>::assemble_face_loads(const AffineConstraints<double> &c,
+                                       Vector<double> &system_rhs) const
   {
     const auto &mesh = geometry.mesh;
     // Face loads: Neumann traction on the boundary, prescribed pressure and
@@ -372,8 +370,7 @@ namespace PolyFrac
           const unsigned int   f = network.fracture_faces[i].face;
           const Tensor<1, dim> load =
             -geometry.faces[f].measure *
-            ((with_prescribed_traction ? prescribed_traction(i) :
-                                         Tensor<1, dim>()) +
+            (prescribed_traction(i) +
              fracture_pressure->value(geometry.faces[f].centroid) *
                network.normal(i));
           add_face_load(jump(geometry, dofs, network, i), load);
@@ -492,7 +489,7 @@ namespace PolyFrac
         }
     AffineConstraints<double> none;
     none.close();
-    assemble_face_loads(none, loads, false);
+    assemble_face_loads(none, loads);
     add_over_ranks(loads, system_rhs);
   }
 

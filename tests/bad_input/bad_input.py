@@ -688,6 +688,27 @@ CASES = {
             "Contact", Friction_law="Coulomb",
             Dynamic_friction_coefficient="0.3")},
         status=0),
+    "quasi_static_steps_with_load_steps": case(
+        "`Quasi-static time steps = true` with `Number of load steps = 3`",
+        ["subsection <Contact>: <Number of load steps> = 3 with <Quasi-static "
+         "time steps> = true: the time steps are the load steps"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Number_of_load_steps="3",
+            **{"Quasi-static time steps": "true"})}),
+    "quasi_static_steps_under_elasticity": case(
+        "`Quasi-static time steps = true` under `Model = elasticity`",
+        ["Warning: Contact/Quasi-static time steps is not used by Model = "
+         "elasticity and is ignored"],
+        files={"scene.prm": SEGMENT + section(
+            "Contact", **{"Quasi-static time steps": "true"})},
+        status=0),
+    "time_step_static_contact": case(
+        "`Time/Time step = 0.01` under a static `Model = contact mechanics`",
+        ["Warning: Time/Time step is not used by a static Model = contact "
+         "mechanics and is ignored"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Time", Time_step="0.01")},
+        status=0),
     "slip_weakening_distance_under_flow": case(
         "`Model = flow`, `Slip-weakening distance = 0.01` (was silently "
         "ignored: the flow model's list of contact entries predated the "

@@ -91,10 +91,11 @@ namespace PolyFrac
     ContactMechanicsModel(const Parameters               &prm,
                           const LevelDiscretization<dim> &discretization);
 
+    /** With Contact/Quasi-static time steps: steps in time. */
     bool
     is_time_dependent() const override
     {
-      return false;
+      return prm.contact.quasi_static_steps;
     }
 
     /** Starts Newton from the multipliers of the coarser level when
@@ -106,9 +107,23 @@ namespace PolyFrac
     std::shared_ptr<const LevelStart>
     level_start() const override;
 
-    /** Runs the load steps; prints the Newton iterations. */
+    /** With quasi-static time steps: the equilibrium with the loads at
+     * t = 0 (load steps from zero), step 0 of the series. */
+    std::optional<StepReport>
+    start_in_equilibrium(std::ostream &out) override;
+
+    /** Runs the load steps (static), or one quasi-static step to the loads
+     * at @p t_new (ContactMechanics::quasi_static_step()); prints the
+     * Newton iterations and reports the contact states. */
     StepReport
     step(const double t_old, const double t_new, std::ostream &out) override;
+
+    /** The state and what later steps inherit (Checkpoint). */
+    void
+    save_state(std::ostream &out) const override;
+
+    void
+    load_state(std::istream &in) override;
 
     /** Prints the largest opening (and the exact one there, if known). */
     void
@@ -156,6 +171,17 @@ namespace PolyFrac
     /** The solution. */
     MechanicalState<dim> state;
   };
+
+
+
+  /** Writes the counts and measures of the open, stick and slip fracture
+   * faces of @p state to @p report (nothing without fractures). */
+  template <int dim>
+  void
+  summarise_contact_states(const MeshGeometry<dim>    &geometry,
+                           const FractureNetwork<dim> &network,
+                           const MechanicalState<dim> &state,
+                           StepReport                 &report);
 
 
 

@@ -31,6 +31,11 @@ namespace PolyFrac
     bool converged = true;
     /** What failed and what was tried, when the step did not converge. */
     std::string failure;
+    /** Whether the failure is a quasi-static instability (no equilibrium
+     * beyond the state at the start of the step, QuasiStaticInstability):
+     * the driver cuts the step, and ends the level at that state once the
+     * cuts are exhausted, with a report instead of an error. */
+    bool quasi_static_instability = false;
     /** Fixed-point iterations of a coupled step. */
     std::optional<unsigned int> coupling_iterations;
     /** Newton iterations of the step (summed over coupling iterations). */

@@ -102,8 +102,16 @@ namespace PolyFrac
       plan_next_step();
     }
 
+    /** Whether the step that just failed may be cut again (fewer than
+     * max_cuts cuts in a row before it). */
+    bool
+    may_cut() const
+    {
+      return cuts_in_a_row < max_cuts;
+    }
+
     /** Halves the next step after a failed one (whose @p failure is
-     * printed to @p out); throws after 10 cuts in a row. */
+     * printed to @p out); throws after max_cuts cuts in a row. */
     void
     cut(const std::string &failure, std::ostream &out);
 
@@ -125,6 +133,9 @@ namespace PolyFrac
     is_output_time() const;
 
   private:
+    /** The cuts in a row after which a failed step stops the run. */
+    static constexpr unsigned int max_cuts = 10;
+
     /** The step length wanted next: the planned one, clipped to land on
      * the next output time. */
     void

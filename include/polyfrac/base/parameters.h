@@ -229,6 +229,11 @@ namespace PolyFrac
     static void
     print_defaults(const unsigned int dim, std::ostream &out);
 
+    /** Whether the scene steps in time (Time/...): flow, poromechanics, and
+     * contact mechanics with Contact/Quasi-static time steps. */
+    bool
+    is_time_dependent() const;
+
     /** Warnings collected while parsing (entries set but unused). */
     std::vector<std::string> warnings;
 
@@ -378,6 +383,10 @@ namespace PolyFrac
       double beta;
       /** Number of load steps N: step k scales the loads by k/N. */
       unsigned int n_load_steps;
+      /** Quasi-static time steps: Model = contact mechanics steps in time
+       * (Time/...) with its loads at each time and the slip history kept;
+       * one static solve otherwise. */
+      bool quasi_static_steps;
     } contact; /**< The subsection Contact. */
 
     /**

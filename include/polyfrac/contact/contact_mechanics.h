@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,30 @@ namespace PolyFrac
     /** The contact states of the faces. */
     ContactStates states;
   };
+
+  /**
+   * No quasi-static equilibrium was found beyond the state a step started
+   * from, while faces of that state slip on a weakening friction law
+   * (ContactMechanics::quasi_static_step()): where the load has passed the
+   * peak that a slip-weakening patch can carry, the rupture would go on
+   * dynamically, which a quasi-static model does not follow.
+   */
+  class QuasiStaticInstability : public std::runtime_error
+  {
+  public:
+    /** @p what: what failed; @p n_weakening_faces: the faces in slip on
+     * the weakening law. */
+    QuasiStaticInstability(const std::string &what,
+                           const unsigned int n_weakening_faces)
+      : std::runtime_error(what)
+      , n_weakening_faces(n_weakening_faces)
+    {}
+
+    /** The fracture faces that slip on the weakening law. */
+    const unsigned int n_weakening_faces;
+  };
+
+
 
   /**
    * Contact mechanics on a fracture network (doc/scheme.md §5-6): the
@@ -124,6 +149,19 @@ namespace PolyFrac
     solve(MechanicalState<dim>       &state,
           std::ostream               &out,
           const MechanicalState<dim> *guess = nullptr);
+
+    /**
+     * One quasi-static time step (Contact/Quasi-static time steps): Newton
+     * from @p state, the equilibrium of the previous step and the reference
+     * of its slip increment and slip path, to the loads of the last
+     * set_loads(), without load steps; writes the converged state to @p
+     * state. Throws QuasiStaticInstability if Newton fails while faces of
+     * @p state slip on a weakening friction law (no equilibrium may exist
+     * beyond it), ExcMessage if it fails otherwise; @p state is then
+     * unchanged.
+     */
+    void
+    quasi_static_step(MechanicalState<dim> &state, std::ostream &out);
 
     /**
      * The loads and Dirichlet data at time @p t, plus @p additional_load on
@@ -357,6 +395,28 @@ namespace PolyFrac
      * stored. */
     void
     stiffness_vmult(const Vector<double> &src, Vector<double> &dst) const;
+
+    /** Takes the converged iterate @p x at @p load as the solution: its
+     * contact states, its slip path, the reference of the next increment. */
+    void
+    accept(const Vector<double> &x, const double load);
+
+    /** Throws QuasiStaticInstability if the converged iterate @p x of a
+     * quasi-static step from @p state slips a face by more than the
+     * friction law allows a step (FrictionLaw::maximum_slip_increment()). */
+    void
+    check_slip_increments(const Vector<double>       &x,
+                          const MechanicalState<dim> &state) const;
+
+    /** The fracture faces of @p state that slip where the friction law
+     * weakens with slip (∂g/∂s < 0 at their slip path). */
+    unsigned int
+    n_weakening_faces(const MechanicalState<dim> &state) const;
+
+    /** Writes the solution to @p state and what the Newton steps fell back
+     * on (and their timings) to @p out. */
+    void
+    finish(MechanicalState<dim> &state, std::ostream &out) const;
 
     /** Newton on one load step to @p load, from @p x; @p continued: from
      * the states of a converged load step before it. False if it did not

@@ -10,6 +10,7 @@
 #include <polyfrac/mesh/mesh_geometry.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -77,6 +78,17 @@ namespace PolyFrac
                                const double) const
     {
       return 0;
+    }
+
+    /** The largest slip that a quasi-static time step may add to a face
+     * whose slip path is @p slip (ContactMechanics::quasi_static_step()):
+     * infinite unless the bound weakens with slip, where a longer step may
+     * have jumped past the peak load of a slipping patch onto another
+     * equilibrium instead of following the quasi-static path. */
+    virtual double
+    maximum_slip_increment(const double) const
+    {
+      return std::numeric_limits<double>::infinity();
     }
   };
 

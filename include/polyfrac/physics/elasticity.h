@@ -136,8 +136,8 @@ namespace PolyFrac
     Vector<float>
     error_indicators(const MechanicalState<dim> &state) const;
 
-    /** The prescribed traction λ(x̄_σ) (Fractures/Traction) on fracture
-     * face @p i. */
+    /** The fracture traction t(x̄_σ) (Fractures/Traction) on fracture face
+     * @p i: the prescribed λ of Model = elasticity. */
     Tensor<1, dim>
     prescribed_traction(const unsigned int i) const;
 
@@ -276,13 +276,13 @@ namespace PolyFrac
 
     /**
      * Adds the face loads Σ |σ| load · (coefficients): the Neumann
-     * traction, the fracture pressure and (if @p with_prescribed_traction)
-     * the prescribed multiplier.
+     * traction, the fracture pressure and the fracture traction
+     * (Fractures/Traction: the prescribed multiplier of Model = elasticity,
+     * a load on the faces besides the contact multiplier otherwise).
      */
     void
     assemble_face_loads(const AffineConstraints<double> &c,
-                        Vector<double>                  &system_rhs,
-                        const bool with_prescribed_traction) const;
+                        Vector<double>                  &system_rhs) const;
 
     const Parameters           &prm;
     const MeshGeometry<dim>    &geometry;

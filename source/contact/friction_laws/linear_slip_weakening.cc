@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace PolyFrac
 {
@@ -80,6 +81,17 @@ namespace PolyFrac
                  -(this->friction_coefficient() - dynamic_coefficient) /
                    weakening_distance * std::max(normal, 0.) :
                  0.;
+      }
+
+      /** A quarter of D_c while the face weakens (s < D_c): on the
+       * quasi-static path the slip of a step falls with the step, while a
+       * jump past the peak load slips by D_c or more. */
+      double
+      maximum_slip_increment(const double slip) const override
+      {
+        return slip < weakening_distance ?
+                 weakening_distance / 4 :
+                 std::numeric_limits<double>::infinity();
       }
 
     private:
