@@ -7,8 +7,14 @@ at its end (the fluid volumes of every step, the fractures). Then checkpoints th
 do not belong to the run are refused with their message: another scene (the
 entry named), another version, a file cut short, no file at all.
 
-usage: restart.py POLYFRAC SOURCE_DIR WORK_DIR N_RANKS END_TIME
-(End time of the scene, steps of 0.5 s; the run is stopped after 3 steps)
+With SCENE = nucleation, the same for contact mechanics in quasi-static
+time steps (prm/nucleation-2d.prm on 3.1 m faces, slip weakening): the
+resumed run carries the slip history and ends at the same quasi-static
+instability, with the same files.
+
+usage: restart.py POLYFRAC SOURCE_DIR WORK_DIR N_RANKS END_TIME [SCENE]
+(End time of the scene, steps of 0.5 s; the run is stopped after 3 steps;
+SCENE: slip, the default, or nucleation)
 Exits non-zero, saying why, if any of this fails."""
 
 import os
@@ -21,9 +27,18 @@ import time
 
 program, source, work = sys.argv[1:4]
 n_ranks, end_time = int(sys.argv[4]), sys.argv[5]
-scene = [os.path.join(source, "prm", "poromechanics-2d-slip.prm"),
+nucleation = len(sys.argv) > 6 and sys.argv[6] == "nucleation"
+scene = [os.path.join(source, "prm", "nucleation-2d.prm" if nucleation else
+                      "poromechanics-2d-slip.prm"),
          "--set", "Time/End time=" + end_time, "--set", "Time/Time step=0.5",
          "--set", "Output/Print timings=false"]
+if nucleation:
+    scene += ["--set", "Mesh/Local refinements=2"]
+# The lines of the summary at the end of the run: the fluid volumes of all
+# the steps (those before the checkpoint too) and the fractures, or the
+# instability that ends the nucleation.
+summary_lines = ("Quasi-static instability",) if nucleation else (
+    "Fluid volumes", "Injection pressure", "Fractures at t")
 if n_ranks > 1:
     # Not yet on several ranks: the normal face bubbles. The direct solver
     # (the monolithic Newton, every rank factorising the whole Jacobian):
@@ -70,15 +85,12 @@ if result.returncode != 0:
 
 
 def run_summary(stdout):
-    # The summary at the end: the fluid volumes of all the steps (those
-    # before the checkpoint too) and the fractures.
     return [line for line in stdout.splitlines()
-            if line.startswith(("Fluid volumes", "Injection pressure",
-                                "Fractures at t"))]
+            if line.startswith(summary_lines)]
 
 
 whole_summary = run_summary(result.stdout)
-if len(whole_summary) != 3:
+if len(whole_summary) != len(summary_lines):
     fail("the whole run prints no summary at its end:\n" + result.stdout)
 steps = n_rows(whole) - 1
 
