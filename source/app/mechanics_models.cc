@@ -171,6 +171,7 @@ namespace PolyFrac
     out << "Equilibrium at t = 0:" << std::endl;
     contact.set_loads(0, Vector<double>());
     contact.solve(state, out);
+    contact.check_start(state);
     StepReport report;
     report.newton_iterations = contact.n_newton_iterations();
     summarise_contact_states(*discretization.geometry,

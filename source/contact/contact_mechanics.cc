@@ -983,6 +983,34 @@ namespace PolyFrac
 
   template <int dim>
   void
+  ContactMechanics<dim>::check_start(const MechanicalState<dim> &state) const
+  {
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const double allowed = friction->maximum_slip_increment(0.);
+        if (state.face_slip(i) > allowed)
+          {
+            std::ostringstream what;
+            what << "The equilibrium at t = 0 slips fracture face " << i
+                 << " (at "
+                 << geometry.faces[network.fracture_faces[i].face].centroid
+                 << ") by " << state.face_slip(i) << ", more than the "
+                 << allowed << " that " << friction->name()
+                 << " allows a step: Newton, started from the unloaded "
+                    "state, may have found a weakened equilibrium that a "
+                    "load rising from zero would not reach. Start the "
+                    "loads that change in time at values the faces carry "
+                    "without slipping (e.g. a Fractures/Traction that is 0 "
+                    "at t = 0) and let the time steps bring them on.";
+            AssertThrow(false, ExcMessage(what.str()));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
   ContactMechanics<dim>::check_slip_increments(
     const Vector<double>       &x,
     const MechanicalState<dim> &state) const

@@ -66,6 +66,25 @@ POROMECHANICS_2_RANKS = (
     "  set Face bubbles = false\nend\n"
     "subsection Output\n  set Write VTU = false\nend\n")
 CONTACT = "subsection Model\n  set Model = contact mechanics\nend\n"
+# prm/nucleation-2d.prm on 3.1 m faces, without its fault.
+NUCLEATION = (
+    "set Dimension = 2\n" + CONTACT +
+    "subsection Mesh\n  set Lower left corner = -100, -100\n"
+    "  set Upper right corner = 100, 100\n  set Subdivisions = 16, 16\n"
+    "  set Local refinement box = -20, -20 : 20, 20\n"
+    "  set Local refinements = 2\nend\n"
+    "subsection Material\n  set Lame lambda = 1e10\n  set Lame mu = 1e10\n"
+    "end\n"
+    "subsection Initial stress\n  set Stress = -1e7; 5e6; 5e6; -1e7\nend\n"
+    "subsection Boundary conditions\n  set Dirichlet boundary ids = "
+    "0, 1, 2, 3\nend\n"
+    "subsection Contact\n  set Friction law = linear slip weakening\n"
+    "  set Friction coefficient = 0.6\n"
+    "  set Dynamic friction coefficient = 0.5\n"
+    "  set Slip-weakening distance = 1e-3\n"
+    "  set Quasi-static time steps = true\nend\n"
+    "subsection Output\n  set Output directory = results\n"
+    "  set Print timings = false\nend\n")
 FLOW = "subsection Model\n  set Model = flow\nend\n"
 
 
@@ -695,6 +714,17 @@ CASES = {
         files={"scene.prm": CONTACT + SEGMENT + section(
             "Contact", Number_of_load_steps="3",
             **{"Quasi-static time steps": "true"})}),
+    "weakened_start_equilibrium": case(
+        "slip weakening in quasi-static steps with a fault traction near the "
+        "peak already at t = 0 (Newton from the unloaded state found a "
+        "weakened equilibrium, 0.6 mm of slip, that loading would not reach)",
+        ["The equilibrium at t = 0 slips fracture face", "more than the "
+         "0.00025 that linear slip weakening allows a step", "a Fractures/"
+         "Traction that is 0 at t = 0"],
+        files={"scene.prm": NUCLEATION + section(
+            "Fractures", Segments="-50, 0 : 50, 0",
+            Traction="0.9e6*exp(-x^2/400); 0")},
+        base="", stage="level"),
     "quasi_static_steps_under_elasticity": case(
         "`Quasi-static time steps = true` under `Model = elasticity`",
         ["Warning: Contact/Quasi-static time steps is not used by Model = "

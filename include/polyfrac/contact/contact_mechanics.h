@@ -164,6 +164,17 @@ namespace PolyFrac
     quasi_static_step(MechanicalState<dim> &state, std::ostream &out);
 
     /**
+     * Throws, saying what to do, if @p state, the equilibrium of a first
+     * solve() from the unloaded state, has slipped a face by more than the
+     * friction law allows a quasi-static step
+     * (FrictionLaw::maximum_slip_increment(), finite for weakening laws):
+     * Newton, started from zero, may then have found a weakened equilibrium
+     * that a load rising from zero would not reach.
+     */
+    void
+    check_start(const MechanicalState<dim> &state) const;
+
+    /**
      * The loads and Dirichlet data at time @p t, plus @p additional_load on
      * the displacement unknowns (e.g. BiotCoupling::pressure_load() of a
      * coupled step), for the next solve(); the operator is unchanged.
