@@ -155,6 +155,10 @@ namespace PolyFrac
   std::shared_ptr<const LevelStart>
   ContactMechanicsModel<dim>::level_start() const
   {
+    // Quasi-static steps: the next level starts from its own equilibrium
+    // at t = 0, not from this level's last step.
+    if (is_time_dependent())
+      return {};
     auto start   = std::make_shared<ContactLevelStart<dim>>();
     start->field = contact.multiplier_field();
     return start;
@@ -185,7 +189,7 @@ namespace PolyFrac
 
   template <int dim>
   StepReport
-  ContactMechanicsModel<dim>::step(const double,
+  ContactMechanicsModel<dim>::step(const double  t_old,
                                    const double  t_new,
                                    std::ostream &out)
   {
@@ -194,24 +198,30 @@ namespace PolyFrac
     if (!is_time_dependent())
       contact.solve(state, out);
     else
-      try
-        {
-          contact.set_loads(t_new, Vector<double>());
-          contact.quasi_static_step(state, out);
-        }
-      catch (const QuasiStaticInstability &instability)
-        {
-          report.converged                = false;
-          report.failure                  = instability.what();
-          report.quasi_static_instability = true;
-          return report;
-        }
-      catch (const std::exception &failure)
-        {
-          report.converged = false;
-          report.failure   = exception_message(failure);
-          return report;
-        }
+      {
+        contact.set_loads(t_new, Vector<double>());
+        try
+          {
+            contact.quasi_static_step(state, out);
+          }
+        catch (const QuasiStaticInstability &instability)
+          {
+            report.failure                  = instability.what();
+            report.quasi_static_instability = true;
+          }
+        catch (const std::exception &failure)
+          {
+            report.failure = exception_message(failure);
+          }
+        if (!report.failure.empty())
+          {
+            // The state stays that of t_old, with its loads (the output
+            // of the last equilibrium, if the level ends here).
+            report.converged = false;
+            contact.set_loads(t_old, Vector<double>());
+            return report;
+          }
+      }
     report.newton_iterations =
       contact.n_newton_iterations() - iterations_before;
     out << "Newton iterations: " << *report.newton_iterations << std::endl;
@@ -240,6 +250,7 @@ namespace PolyFrac
   {
     boost::archive::binary_iarchive archive(in);
     archive >> state >> contact;
+    contact.restore(state);
   }
 
 
@@ -270,13 +281,14 @@ namespace PolyFrac
 
   template <int dim>
   Errors
-  ContactMechanicsModel<dim>::errors(const double) const
+  ContactMechanicsModel<dim>::errors(const double t) const
   {
     return compute_errors(prm,
                           *discretization.geometry,
                           *discretization.network,
                           *discretization.dofs,
-                          state);
+                          state,
+                          t);
   }
 
 

@@ -750,6 +750,10 @@ namespace PolyFrac
         model.load_state(model_state);
         newton_iterations = resumption->newton_iterations;
         resumption.reset();
+        // The run that stopped wrote the state of its last step, if that
+        // was an output time.
+        if (stepping.is_output_time())
+          written = stepping.current_time();
         out << "Resumed from <" << Checkpoint::file_name(prm) << "> after step "
             << stepping.step_number() << ", t = " << stepping.current_time()
             << std::endl;

@@ -1519,7 +1519,8 @@ namespace PolyFrac
     }
     contact.n_load_steps       = prm->get_integer("Number of load steps");
     contact.quasi_static_steps = prm->get_bool("Quasi-static time steps");
-    AssertThrow(!contact.quasi_static_steps || contact.n_load_steps == 1,
+    AssertThrow(model != "contact mechanics" || !contact.quasi_static_steps ||
+                  contact.n_load_steps == 1,
                 ExcMessage(cwhere + ": <Number of load steps> = " +
                            std::to_string(contact.n_load_steps) +
                            " with <Quasi-static time steps> = true: the "
@@ -2256,7 +2257,8 @@ namespace PolyFrac
       warn_if_set("Output",
                   "Checkpoint interval",
                   "a static Model = " + model + " (one step, no checkpoint)");
-    if (model == "flow" || model == "contact mechanics")
+    if (model == "flow" ||
+        (model == "contact mechanics" && is_time_dependent()))
       warn_if_set("Time", "Equilibrium start");
     if (model == "poromechanics")
       warn_if_set("Contact",

@@ -955,15 +955,26 @@ namespace PolyFrac
     set_solution(state);
     set_previous_step(state);
     singular_jacobian.clear();
+    // A failed step leaves what later steps inherit (the β divided where
+    // Newton cycled) as it was.
+    const std::vector<double> beta_before       = beta;
+    const unsigned int        reductions_before = n_beta_reductions;
+    const auto                restore_beta      = [&]() {
+      beta              = beta_before;
+      n_beta_reductions = reductions_before;
+    };
     Vector<double> x = solution;
     if (!newton(1., true, x, out))
       {
+        restore_beta();
+        // A singular Jacobian (a block free to move) is a modelling error,
+        // not the end of the quasi-static path.
+        AssertThrow(singular_jacobian.empty(), ExcMessage(singular_jacobian));
         std::ostringstream what;
         what << "no equilibrium found from the state of the previous step "
                 "(Newton reached "
-             << prm.nonlinear.max_iterations
-             << " iterations or a singular Jacobian, " << friction->name()
-             << ").";
+             << prm.nonlinear.max_iterations << " iterations, "
+             << friction->name() << ").";
         const unsigned int n_weakening = n_weakening_faces(state);
         if (n_weakening > 0)
           throw QuasiStaticInstability(what.str() + " " +
@@ -974,9 +985,28 @@ namespace PolyFrac
                                        n_weakening);
         AssertThrow(false, ExcMessage(what.str()));
       }
-    check_slip_increments(x, state);
+    try
+      {
+        check_slip_increments(x, state);
+      }
+    catch (const QuasiStaticInstability &)
+      {
+        restore_beta();
+        throw;
+      }
     accept(x, 1.);
     finish(state, out);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::restore(const MechanicalState<dim> &state)
+  {
+    set_solution(state);
+    set_previous_step(state);
+    states = state.contact;
   }
 
 

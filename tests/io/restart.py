@@ -114,6 +114,13 @@ if "Stopped by SIGTERM after step" not in stderr or "--resume" not in stderr:
     fail("the stopped run does not say where it stopped and how to go on:\n"
          + stderr)
 taken = n_rows(stopped) - 1
+if nucleation:
+    # The checkpoint must carry a slip history: faces slip at its step.
+    with open(os.path.join(stopped, "time_series-level-0.csv")) as f:
+        last = f.read().splitlines()[-1].split(",")
+    if float(last[12]) <= 0:
+        fail("no face slips at the checkpoint's step (slip_area %s): the "
+             "restart would not carry a slip history" % last[12])
 if not 3 <= taken < steps:
     fail("the run was stopped after %d of %d steps, not in the middle"
          % (taken, steps))

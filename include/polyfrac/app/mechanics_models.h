@@ -91,11 +91,12 @@ namespace PolyFrac
     ContactMechanicsModel(const Parameters               &prm,
                           const LevelDiscretization<dim> &discretization);
 
-    /** With Contact/Quasi-static time steps: steps in time. */
+    /** With Contact/Quasi-static time steps: steps in time
+     * (Parameters::is_time_dependent()). */
     bool
     is_time_dependent() const override
     {
-      return prm.contact.quasi_static_steps;
+      return prm.is_time_dependent();
     }
 
     /** Starts Newton from the multipliers of the coarser level when
@@ -103,7 +104,8 @@ namespace PolyFrac
     void
     start_from(const LevelStart &coarser) override;
 
-    /** The converged multipliers and states. */
+    /** The converged multipliers and states; nothing with quasi-static
+     * time steps (each level starts at its own t = 0). */
     std::shared_ptr<const LevelStart>
     level_start() const override;
 
@@ -122,6 +124,8 @@ namespace PolyFrac
     void
     save_state(std::ostream &out) const override;
 
+    /** Reads what save_state() wrote and takes it as the solution that
+     * the next step starts from. */
     void
     load_state(std::istream &in) override;
 

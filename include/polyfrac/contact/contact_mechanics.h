@@ -164,6 +164,14 @@ namespace PolyFrac
     quasi_static_step(MechanicalState<dim> &state, std::ostream &out);
 
     /**
+     * Takes @p state (a step's equilibrium, e.g. read from a checkpoint) as
+     * the solution: its displacement, multipliers, contact states and slip
+     * path, the start and the reference of the next quasi-static step.
+     */
+    void
+    restore(const MechanicalState<dim> &state);
+
+    /**
      * Throws, saying what to do, if @p state, the equilibrium of a first
      * solve() from the unloaded state, has slipped a face by more than the
      * friction law allows a quasi-static step

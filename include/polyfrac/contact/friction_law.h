@@ -86,7 +86,7 @@ namespace PolyFrac
      * have jumped past the peak load of a slipping patch onto another
      * equilibrium instead of following the quasi-static path. */
     virtual double
-    maximum_slip_increment(const double) const
+    maximum_slip_increment(const double /*slip*/) const
     {
       return std::numeric_limits<double>::infinity();
     }
