@@ -131,6 +131,10 @@ long_tests=(
   # operator in Debug through the flow scenes (flow_2d_network,
   # flow_3d_network) and physics/flow_cubic_law_01.
   io/restart # 52 s (Release 14 s)
+  # Debug + sanitizer wall time of 2026-11-27 (a Release suite beside it):
+  # the quasi-static contact restart; its steps stay in Debug through
+  # polyfrac/nucleation_slip_weakening (155 s there).
+  io/restart_nucleation # 250 s (Release 15 s)
   parallel/poromechanics_2d_slip_2_ranks_newton # 26 s (Release 3 s)
   base/bad_parameters_01 # 30 s
   discretization/hfv_exactness_01 # 34 s
