@@ -871,9 +871,7 @@ namespace PolyFrac
                                std::ostream               &out,
                                const MechanicalState<dim> *guess)
   {
-    set_solution(state);
-    set_previous_step(state);
-    singular_jacobian.clear();
+    begin_step(state);
     if (guess && prm.contact.n_load_steps == 1)
       set_solution(*guess);
 
@@ -952,9 +950,7 @@ namespace PolyFrac
   ContactMechanics<dim>::quasi_static_step(MechanicalState<dim> &state,
                                            std::ostream         &out)
   {
-    set_solution(state);
-    set_previous_step(state);
-    singular_jacobian.clear();
+    begin_step(state);
     // A failed step leaves what later steps inherit (the β divided where
     // Newton cycled) as it was.
     const std::vector<double> beta_before       = beta;
@@ -1002,10 +998,20 @@ namespace PolyFrac
 
   template <int dim>
   void
-  ContactMechanics<dim>::restore(const MechanicalState<dim> &state)
+  ContactMechanics<dim>::begin_step(const MechanicalState<dim> &state)
   {
     set_solution(state);
     set_previous_step(state);
+    singular_jacobian.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::restore(const MechanicalState<dim> &state)
+  {
+    begin_step(state);
     states = state.contact;
   }
 
@@ -1015,9 +1021,9 @@ namespace PolyFrac
   void
   ContactMechanics<dim>::check_start(const MechanicalState<dim> &state) const
   {
+    const double allowed = friction->maximum_slip_increment(0.);
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
-        const double allowed = friction->maximum_slip_increment(0.);
         if (state.face_slip(i) > allowed)
           {
             std::ostringstream what;
@@ -1052,6 +1058,7 @@ namespace PolyFrac
         const double allowed = friction->maximum_slip_increment(before);
         if (slip[i] - before > allowed)
           {
+            const unsigned int n_weakening = n_weakening_faces(state);
             std::ostringstream what;
             what << "the step slipped " << slip[i] - before
                  << " on fracture face " << i << " (at "
@@ -1060,9 +1067,8 @@ namespace PolyFrac
                  << friction->name()
                  << " allows a step (it may have jumped past the peak load "
                     "of the slipping patch onto another equilibrium); "
-                 << n_weakening_faces(state)
-                 << " faces slip on the weakening law.";
-            throw QuasiStaticInstability(what.str(), n_weakening_faces(state));
+                 << n_weakening << " faces slip on the weakening law.";
+            throw QuasiStaticInstability(what.str(), n_weakening);
           }
       }
   }

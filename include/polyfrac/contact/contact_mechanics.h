@@ -415,6 +415,11 @@ namespace PolyFrac
     void
     stiffness_vmult(const Vector<double> &src, Vector<double> &dst) const;
 
+    /** Starts a solve (static or quasi-static) from @p state: its solution,
+     * the reference of the slip increment and of the slip path. */
+    void
+    begin_step(const MechanicalState<dim> &state);
+
     /** Takes the converged iterate @p x at @p load as the solution: its
      * contact states, its slip path, the reference of the next increment. */
     void
