@@ -2,7 +2,7 @@
 #ifndef polyfrac_tests_h
 #define polyfrac_tests_h
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 
 #include <cmath>
 #include <iomanip>
@@ -19,8 +19,8 @@ namespace PolyFrac::Testing
     prm.mesh.subdivisions.assign(dim, subdivisions);
     // The unit tests' manufactured data are for lambda = mu = 1 (the
     // Material defaults are SI: 10 GPa).
-    prm.lame_lambda = 1;
-    prm.lame_mu     = 1;
+    prm.mechanics.lame_lambda = 1;
+    prm.mechanics.lame_mu     = 1;
     return prm;
   }
 

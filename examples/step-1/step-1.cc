@@ -265,7 +265,8 @@ namespace Step1
     , network(*level.network)
     , dofs(*level.dofs)
   {
-    AssertThrow(prm.model == "elasticity" && prm.boundary.neumann_ids.empty(),
+    AssertThrow(prm.model == "elasticity" &&
+                  prm.mechanics.boundary.neumann_ids.empty(),
                 ExcMessage("step-1 assembles Model = elasticity with Dirichlet "
                            "and free boundaries only; run the polyfrac program "
                            "for Neumann loads and contact."));
@@ -277,12 +278,13 @@ namespace Step1
                                   n_components,
                                   prm.constants);
     };
-    body_force = parse("Body force", prm.body_force, dim);
+    body_force = parse("Body force", prm.mechanics.body_force, dim);
     dirichlet  = parse("Boundary conditions/Dirichlet expression",
-                      prm.boundary.dirichlet_expression,
+                      prm.mechanics.boundary.dirichlet_expression,
                       dim);
-    traction   = parse("Fractures/Traction", prm.fractures.traction, dim);
-    pressure   = parse("Fractures/Pressure", prm.fractures.pressure, 1);
+    traction =
+      parse("Fractures/Traction", prm.mechanics.fracture_traction, dim);
+    pressure = parse("Fractures/Pressure", prm.mechanics.fracture_pressure, 1);
   }
 
 
@@ -301,7 +303,7 @@ namespace Step1
   void
   BubbleVEMElasticity<dim>::make_constraints()
   {
-    const auto &ids          = prm.boundary.dirichlet_ids;
+    const auto &ids          = prm.mechanics.boundary.dirichlet_ids;
     const auto  is_dirichlet = [&ids](const types::boundary_id id) {
       return ids.empty() || std::find(ids.begin(), ids.end(), id) != ids.end();
     };
@@ -350,7 +352,7 @@ namespace Step1
   BubbleVEMElasticity<dim>::local_matrix(
     const LocalReconstruction<dim> &local) const
   {
-    const double       mu = prm.lame_mu, lambda = prm.lame_lambda;
+    const double mu = prm.mechanics.lame_mu, lambda = prm.mechanics.lame_lambda;
     const unsigned int n_local = local.n_local();
 
     std::vector<SymmetricTensor<2, dim>> strain(dim * n_local);
@@ -486,7 +488,8 @@ namespace Step1
   run(const Parameters &prm, std::ostream &out)
   {
     std::vector<ConvergenceRow> rows;
-    for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
+    for (unsigned int level = 0; level < prm.convergence.n_refinement_levels;
+         ++level)
       {
         const LevelDiscretization<dim> discretization(prm, level);
         const auto                    &geometry = *discretization.geometry;
@@ -499,7 +502,8 @@ namespace Step1
         step1.assemble_system();
         step1.solve();
 
-        Elasticity<dim> library(prm, geometry, network, dofs);
+        Elasticity<dim> library(
+          prm.mechanics, prm.solver, prm, geometry, network, dofs);
         library.assemble();
         MechanicalState<dim> state;
         library.solve(state);
@@ -516,13 +520,15 @@ namespace Step1
                                std::to_string(relative) + " (relative)."));
         out << "< 1e-12" << std::endl << std::endl;
 
-        rows.push_back({level,
-                        geometry.max_diameter(),
-                        geometry.mesh.n_cells(),
-                        static_cast<unsigned int>(library.n_unknowns()),
-                        compute_errors(prm, geometry, network, dofs, state),
-                        {},
-                        0.});
+        rows.push_back(
+          {level,
+           geometry.max_diameter(),
+           geometry.mesh.n_cells(),
+           static_cast<unsigned int>(library.n_unknowns()),
+           compute_errors(
+             {prm.exact, prm, nullptr}, geometry, network, dofs, state),
+           {},
+           0.});
       }
 
     // The table: the largest polytope diameter h, the errors with six

@@ -248,9 +248,9 @@
 // From PolyFrac: Parameters and LevelDiscretization (the scene and its
 // discretisation), make_expression (the parsed expressions of the
 // parameter file), ContactMechanics (the solver) and compute_errors.
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/base/expressions.h>
-#include <polyfrac/base/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
@@ -373,7 +373,7 @@ namespace Step2
     , network(*level.network)
     , dofs(*level.dofs)
     , state(state)
-    , friction(FrictionLaws::create(prm, geometry, network))
+    , friction(FrictionLaws::create(prm.contact, prm, geometry, network))
   {
     AssertThrow(!friction->slips_by_increments() ||
                   prm.contact.n_load_steps == 1,
@@ -410,7 +410,8 @@ namespace Step2
     c.beta =
       beta_factor * (prm.contact.beta > 0 ?
                        prm.contact.beta :
-                       (2 * prm.lame_mu + prm.lame_lambda) / face.diameter);
+                       (2 * prm.mechanics.lame_mu + prm.mechanics.lame_lambda) /
+                         face.diameter);
 
     c.b_n = c.lambda[0] + c.beta * c.jump[0];
     for (unsigned int d = 1; d < dim; ++d)
@@ -762,12 +763,14 @@ namespace Step2
     AssertThrow(prm.model == "contact mechanics",
                 ExcMessage("step-2 solves Model = contact mechanics; for "
                            "Model = elasticity see step-1."));
-    out << "Friction law: " << FrictionLaws::create<dim>(prm, {})->name()
+    out << "Friction law: "
+        << FrictionLaws::create<dim>(prm.contact, prm, {})->name()
         << (prm.contact.bubbles ? "" : ", without bubbles") << std::endl
         << std::endl;
 
     std::vector<ConvergenceRow> rows;
-    for (unsigned int level = 0; level < prm.n_refinement_levels; ++level)
+    for (unsigned int level = 0; level < prm.convergence.n_refinement_levels;
+         ++level)
       {
         const LevelDiscretization<dim> discretization(prm, level);
         const auto                    &geometry = *discretization.geometry;
@@ -777,7 +780,14 @@ namespace Step2
             << " polytopes, " << network.n_fracture_faces()
             << " fracture faces";
 
-        ContactMechanics<dim> contact(prm, geometry, network, dofs);
+        ContactMechanics<dim> contact(prm.contact,
+                                      prm.nonlinear,
+                                      prm.mechanics,
+                                      prm.solver,
+                                      prm,
+                                      geometry,
+                                      network,
+                                      dofs);
         out << ", " << contact.n_unknowns() << " unknowns (u and lambda)"
             << std::endl;
         std::ostringstream   log;
@@ -787,7 +797,7 @@ namespace Step2
 
         const ActiveSetCheck<dim> check(prm, discretization, state);
         check.report(out);
-        if (level + 1 == prm.n_refinement_levels)
+        if (level + 1 == prm.convergence.n_refinement_levels)
           {
             out << std::endl
                 << "Fracture faces along the fracture (level " << level
@@ -796,13 +806,15 @@ namespace Step2
           }
         out << std::endl;
 
-        rows.push_back({level,
-                        geometry.max_diameter(),
-                        geometry.mesh.n_cells(),
-                        static_cast<unsigned int>(contact.n_unknowns()),
-                        compute_errors(prm, geometry, network, dofs, state),
-                        {},
-                        0.});
+        rows.push_back(
+          {level,
+           geometry.max_diameter(),
+           geometry.mesh.n_cells(),
+           static_cast<unsigned int>(contact.n_unknowns()),
+           compute_errors(
+             {prm.exact, prm, nullptr}, geometry, network, dofs, state),
+           {},
+           0.});
       }
 
     // The table: the largest polytope diameter h, the errors with six

@@ -227,8 +227,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/app/poromechanics_model.h>
-#include <polyfrac/base/parameters.h>
 
 #include <algorithm>
 #include <cmath>

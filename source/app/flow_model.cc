@@ -19,7 +19,13 @@ namespace PolyFrac
     , discretization(discretization)
     , edges(*discretization.geometry, *discretization.network)
     , dofs(*discretization.mesh, *discretization.network, edges)
-    , flow(prm, *discretization.geometry, *discretization.network, edges, dofs)
+    , flow(prm.flow,
+           prm.solver,
+           prm,
+           *discretization.geometry,
+           *discretization.network,
+           edges,
+           dofs)
     , fluid_balance(prm,
                     *discretization.geometry,
                     *discretization.network,
@@ -141,7 +147,7 @@ namespace PolyFrac
   FlowModel<dim>::errors(const double t) const
   {
     Errors errors;
-    add_pressure_errors(prm,
+    add_pressure_errors({prm.exact, prm, nullptr},
                         *discretization.geometry,
                         *discretization.network,
                         flow,

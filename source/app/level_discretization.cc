@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_refinement.h>
 
 #include <polyfrac/app/level_discretization.h>
+#include <polyfrac/app/memory_estimate.h>
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/mesh/gmsh_reader.h>
@@ -90,10 +91,16 @@ namespace PolyFrac
                       "mesh and list them in Fractures/Gmsh physical "
                       "tags."));
         gmsh_as_read = std::make_shared<const GmshMesh<dim>>(
-          read_gmsh(prm,
+          read_gmsh(prm.mesh.file_name,
+                    prm.fractures.gmsh_physical_tags,
                     prm.mesh.global_refinements + level,
-                    communicator,
-                    triangulation));
+                    triangulation,
+                    [&](const double n_cells) {
+                      check_memory(prm,
+                                   n_cells,
+                                   n_ranks_on_this_node(communicator),
+                                   n_mpi_ranks(communicator));
+                    }));
       }
     else
       MeshBuilder::make_box(prm, level, triangulation);

@@ -57,7 +57,9 @@ namespace PolyFrac
     const LevelDiscretization<dim> &discretization)
     : prm(prm)
     , discretization(discretization)
-    , elasticity(prm,
+    , elasticity(prm.mechanics,
+                 prm.solver,
+                 prm,
                  *discretization.geometry,
                  *discretization.network,
                  *discretization.dofs)
@@ -83,7 +85,7 @@ namespace PolyFrac
   Errors
   ElasticityModel<dim>::errors(const double) const
   {
-    return compute_errors(prm,
+    return compute_errors({prm.exact, prm, nullptr},
                           *discretization.geometry,
                           *discretization.network,
                           *discretization.dofs,
@@ -132,7 +134,11 @@ namespace PolyFrac
     const LevelDiscretization<dim> &discretization)
     : prm(prm)
     , discretization(discretization)
-    , contact(prm,
+    , contact(prm.contact,
+              prm.nonlinear,
+              prm.mechanics,
+              prm.solver,
+              prm,
               *discretization.geometry,
               *discretization.network,
               *discretization.dofs)
@@ -175,6 +181,8 @@ namespace PolyFrac
     out << "Equilibrium at t = 0:" << std::endl;
     contact.set_loads(0, Vector<double>());
     contact.solve(state, out);
+    if (prm.output.print_timings)
+      contact.print_condensation_times(out);
     contact.check_start(state);
     StepReport report;
     report.newton_iterations = contact.n_newton_iterations();
@@ -222,6 +230,8 @@ namespace PolyFrac
             return report;
           }
       }
+    if (prm.output.print_timings)
+      contact.print_condensation_times(out);
     report.newton_iterations =
       contact.n_newton_iterations() - iterations_before;
     out << "Newton iterations: " << *report.newton_iterations << std::endl;
@@ -261,8 +271,11 @@ namespace PolyFrac
   {
     const auto &geometry = *discretization.geometry;
     const auto &network  = *discretization.network;
-    const auto  opening =
-      maximum_opening(prm, geometry, network, *discretization.dofs, state);
+    const auto  opening  = maximum_opening({prm.exact, prm, nullptr},
+                                         geometry,
+                                         network,
+                                         *discretization.dofs,
+                                         state);
     if (!opening)
       return;
     const Point<dim> &x =
@@ -283,7 +296,7 @@ namespace PolyFrac
   Errors
   ContactMechanicsModel<dim>::errors(const double t) const
   {
-    return compute_errors(prm,
+    return compute_errors({prm.exact, prm, nullptr},
                           *discretization.geometry,
                           *discretization.network,
                           *discretization.dofs,

@@ -73,7 +73,9 @@ namespace PolyFrac
     , discretization(discretization)
     , edges(*discretization.geometry, *discretization.network)
     , pressure_dofs(*discretization.mesh, *discretization.network, edges)
-    , flow(prm,
+    , flow(prm.flow,
+           prm.solver,
+           prm,
            *discretization.geometry,
            *discretization.network,
            edges,
@@ -81,12 +83,13 @@ namespace PolyFrac
     , coupling(*discretization.geometry,
                *discretization.network,
                *discretization.dofs)
-    , elasticity(prm,
+    , elasticity(prm.mechanics,
+                 prm.solver,
+                 prm,
                  *discretization.geometry,
                  *discretization.network,
                  *discretization.dofs)
-    , energy_balance(prm,
-                     *discretization.geometry,
+    , energy_balance(*discretization.geometry,
                      *discretization.network,
                      *discretization.dofs,
                      edges,
@@ -100,8 +103,9 @@ namespace PolyFrac
                     edges,
                     pressure_dofs,
                     flow)
-    , fixed_stress_coefficient(std::pow(prm.flow.biot_coefficient, 2) /
-                               (prm.lame_lambda + 2 * prm.lame_mu / dim))
+    , fixed_stress_coefficient(
+        std::pow(prm.flow.biot_coefficient, 2) /
+        (prm.mechanics.lame_lambda + 2 * prm.mechanics.lame_mu / dim))
     , pressure(flow.initial_pressure())
   {
     if (discretization.dofs->is_distributed())
@@ -126,7 +130,8 @@ namespace PolyFrac
                                                      elasticity);
         using Unknowns = typename BiotSystem<dim>::Unknowns;
         system =
-          std::make_unique<BiotSystem<dim>>(prm,
+          std::make_unique<BiotSystem<dim>>(prm.solver,
+                                            prm,
                                             *discretization.dofs,
                                             pressure_dofs,
                                             flow,
@@ -144,7 +149,11 @@ namespace PolyFrac
     if (fractured)
       {
         contact =
-          std::make_unique<ContactMechanics<dim>>(prm,
+          std::make_unique<ContactMechanics<dim>>(prm.contact,
+                                                  prm.nonlinear,
+                                                  prm.mechanics,
+                                                  prm.solver,
+                                                  prm,
                                                   *discretization.geometry,
                                                   *discretization.network,
                                                   *discretization.dofs);
@@ -166,7 +175,7 @@ namespace PolyFrac
   bool
   PoromechanicsModel<dim>::use_monolithic_scheme() const
   {
-    using Scheme           = Parameters::NonlinearData::CouplingScheme;
+    using Scheme           = CouplingScheme;
     const Scheme scheme    = prm.nonlinear.coupling_scheme;
     const bool   fractured = discretization.network->n_fracture_faces() > 0;
     std::string  obstacle;
@@ -196,8 +205,10 @@ namespace PolyFrac
   PoromechanicsModel<dim>::use_analytic_solution()
   {
     check_analytic_box();
-    const auto solution = make_analytic_solution(prm);
-    const auto displacement =
+    analytic =
+      make_analytic_solution(prm.exact, prm.mechanics, prm.flow, prm.mesh, prm);
+    const auto &solution = analytic;
+    const auto  displacement =
       std::make_shared<AnalyticDisplacement<dim>>(solution);
     elasticity.set_dirichlet_data(displacement);
     displacement->set_time(0);
@@ -295,7 +306,8 @@ namespace PolyFrac
     double stress = std::max(elasticity.load_scale(), p.linfty_norm());
     for (const Tensor<1, dim> &lambda : state.multipliers)
       stress = std::max(stress, lambda.norm());
-    const double modulus      = prm.lame_lambda + 2 * prm.lame_mu;
+    const double modulus =
+      prm.mechanics.lame_lambda + 2 * prm.mechanics.lame_mu;
     const auto  &geometry     = *discretization.geometry;
     const double floor        = 1e-6;
     const double displacement = stress * geometry.domain_diameter() / modulus;
@@ -346,9 +358,10 @@ namespace PolyFrac
   std::vector<double>
   PoromechanicsModel<dim>::increment_mobility(const double time_step) const
   {
-    const double b     = prm.flow.biot_coefficient;
-    const double delta = prm.flow.pressure_stabilisation * b * b /
-                         ((prm.lame_lambda + 2 * prm.lame_mu) * time_step);
+    const double b = prm.flow.biot_coefficient;
+    const double delta =
+      prm.flow.pressure_stabilisation * b * b /
+      ((prm.mechanics.lame_lambda + 2 * prm.mechanics.lame_mu) * time_step);
     std::vector<double> s(discretization.geometry->cells.size());
     for (unsigned int c = 0; c < s.size(); ++c)
       s[c] = delta * std::pow(discretization.geometry->cells[c].diameter, 2);
@@ -912,13 +925,14 @@ namespace PolyFrac
   Errors
   PoromechanicsModel<dim>::errors(const double t) const
   {
-    Errors errors = compute_errors(prm,
+    const ExactFields exact{prm.exact, prm, analytic};
+    Errors            errors = compute_errors(exact,
                                    *discretization.geometry,
                                    *discretization.network,
                                    *discretization.dofs,
                                    state,
                                    t);
-    add_pressure_errors(prm,
+    add_pressure_errors(exact,
                         *discretization.geometry,
                         *discretization.network,
                         flow,

@@ -3,11 +3,11 @@
 
 #include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/mechanics_models.h>
+#include <polyfrac/app/memory_estimate.h>
 #include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/app/time_stepping.h>
 #include <polyfrac/base/checked_file.h>
-#include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/base/progress_line.h>
 #include <polyfrac/postprocessing/verification.h>
@@ -481,7 +481,7 @@ namespace PolyFrac
     // request, since tests diff the output.
     TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
     for (unsigned int level = resumption ? resumption->level : 0;
-         level < prm.n_refinement_levels;
+         level < prm.convergence.n_refinement_levels;
          ++level)
       {
         rows.push_back(run_level(level, timer, out));
@@ -498,7 +498,8 @@ namespace PolyFrac
     if (root)
       std::filesystem::remove(Checkpoint::file_name(prm));
     out << std::endl;
-    write_convergence_table(out, rows, true, false, rate_reference(prm));
+    write_convergence_table(
+      out, rows, true, false, rate_reference(prm.mesh, prm.dim));
     if (prm.output.print_timings)
       timer.print_summary();
     out << "\nFiles written in " << prm.output.directory << ':' << std::endl;
@@ -524,7 +525,7 @@ namespace PolyFrac
     archive >> written_files;
     serialize_optional(archive, resumption->newton_iterations);
     archive >> resumption->stepping >> resumption->output >> resumption->model;
-    AssertThrow(resumption->level < prm.n_refinement_levels,
+    AssertThrow(resumption->level < prm.convergence.n_refinement_levels,
                 ExcInternalError());
   }
 
@@ -585,7 +586,10 @@ namespace PolyFrac
   void
   Simulator<dim>::report_checks(std::ostream &out) const
   {
-    const ConvergenceCheck check = check_convergence(prm, rows);
+    const ConvergenceCheck check =
+      check_convergence(prm.convergence,
+                        rate_reference(prm.mesh, prm.dim),
+                        rows);
     if (check.n_checked == 0)
       return;
     if (check.failures.empty())
@@ -690,7 +694,7 @@ namespace PolyFrac
       written_files.push_back(name);
 
     if (prm.mesh.refinement == MeshRefinement::adaptive &&
-        level + 1 < prm.n_refinement_levels)
+        level + 1 < prm.convergence.n_refinement_levels)
       {
         TimerOutput::Scope section(timer, "error indicators");
         coarser_indicators = model->error_indicators();

@@ -10,7 +10,7 @@ namespace PolyFrac
   {
     /** Time step of level @p level. */
     double
-    level_time_step(const Parameters::TimeData &data, const unsigned int level)
+    level_time_step(const TimeParameters &data, const unsigned int level)
     {
       return data.time_step /
              (data.refine_with_mesh ? std::pow(2., level) : 1.);

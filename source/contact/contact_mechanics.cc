@@ -36,22 +36,30 @@ namespace PolyFrac
 
 
   template <int dim>
-  ContactMechanics<dim>::ContactMechanics(const Parameters           &prm,
-                                          const MeshGeometry<dim>    &geometry,
-                                          const FractureNetwork<dim> &network,
-                                          const DoFMap<dim>          &dofs)
+  ContactMechanics<dim>::ContactMechanics(
+    const ContactParameters         &prm,
+    const NonlinearSolverParameters &nonlinear,
+    const MechanicsParameters       &mechanics,
+    const LinearSolverParameters    &solver,
+    const ParameterContext          &context,
+    const MeshGeometry<dim>         &geometry,
+    const FractureNetwork<dim>      &network,
+    const DoFMap<dim>               &dofs)
     : prm(prm)
+    , nonlinear(nonlinear)
+    , solver(solver)
+    , context(context)
     , geometry(geometry)
     , network(network)
     , dofs(dofs)
-    , elasticity(prm, geometry, network, dofs)
-    , friction(FrictionLaws::create(prm, geometry, network))
+    , elasticity(mechanics, solver, context, geometry, network, dofs)
+    , friction(FrictionLaws::create(prm, context, geometry, network))
   {
     const unsigned int n_faces = network.n_fracture_faces();
     for (unsigned int i = 0; i < n_faces; ++i)
       jumps.push_back(jump(geometry, dofs, network, i));
     AssertThrow(n_faces > 0,
-                ExcMessage("In <" + prm.file_name +
+                ExcMessage("In <" + context.file_name +
                            ">: Model = contact mechanics needs at least one "
                            "fracture (Fractures/Segments, Polygons or Gmsh "
                            "physical tags)."));
@@ -62,22 +70,22 @@ namespace PolyFrac
       {
         const auto  &face = geometry.faces[network.fracture_faces[i].face];
         const double scale_aware =
-          (2 * prm.lame_mu + prm.lame_lambda) / face.diameter;
+          (2 * mechanics.lame_mu + mechanics.lame_lambda) / face.diameter;
         scale_min = std::min(scale_min, scale_aware);
         scale_max = std::max(scale_max, scale_aware);
-        beta.push_back(prm.contact.beta > 0 ? prm.contact.beta : scale_aware);
+        beta.push_back(prm.beta > 0 ? prm.beta : scale_aware);
       }
     // The solution does not depend on β, but the contact states are decided
     // by the sign of λ_n + β [[u]]_n: a β so large that β times the
     // round-off of the jump outweighs λ_n (or so small that the jump never
     // counts) makes them follow round-off.
     constexpr double beta_range = 1e8;
-    if (prm.contact.beta > 0 && (prm.contact.beta > beta_range * scale_max ||
-                                 prm.contact.beta < scale_min / beta_range))
+    if (prm.beta > 0 && (prm.beta > beta_range * scale_max ||
+                         prm.beta < scale_min / beta_range))
       {
         std::ostringstream message;
-        message << "In <" << prm.file_name
-                << ">: Contact/Complementarity parameter = " << prm.contact.beta
+        message << "In <" << context.file_name
+                << ">: Contact/Complementarity parameter = " << prm.beta
                 << " is out of range: it must lie within a factor 1e8 of the "
                    "scale-aware (2 mu + lambda)/h_sigma, which is "
                 << scale_min << " to " << scale_max
@@ -92,7 +100,7 @@ namespace PolyFrac
     const types::global_dof_index n =
       dofs.n_displacement_dofs() + dim * n_faces;
     load_vector.reinit(n);
-    if (prm.solver.method == SolverMethod::amg && prm.contact.bubbles)
+    if (solver.method == SolverMethod::amg && prm.bubbles)
       {
         condensation =
           std::make_unique<FaceCondensation<dim>>(trilinos_stiffness,
@@ -100,7 +108,7 @@ namespace PolyFrac
                                                   jumps,
                                                   dirichlet,
                                                   geometry.mesh.vertices,
-                                                  prm.solver);
+                                                  solver);
         trilinos_stiffness.reinit(condensation->pattern());
         elasticity.assemble_operator(trilinos_stiffness, load_vector);
       }
@@ -155,7 +163,7 @@ namespace PolyFrac
     dirichlet.clear();
     for (const auto &line : elasticity.get_constraints().get_lines())
       dirichlet[line.index] = line.inhomogeneity;
-    if (!prm.contact.bubbles)
+    if (!prm.bubbles)
       for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
           dirichlet[dofs.bubble_dof(i, d)] = 0.;
@@ -407,10 +415,10 @@ namespace PolyFrac
         // complementarity residual that vanishes and says nothing of them
         // under the new load: it stops at η² of the momentum scale at the
         // tightest (benchmarks/README.md, "Inexact Newton steps").
-        const double eta    = prm.nonlinear.forcing_term;
+        const double eta    = nonlinear.forcing_term;
         const double linear = eta * R.complementarity;
         const double enough =
-          std::max(0.1 * prm.nonlinear.tolerance,
+          std::max(0.1 * nonlinear.tolerance,
                    given_states ? std::max(eta * eta, linear) : linear) *
           R.momentum_scale;
         const auto krylov =
@@ -565,7 +573,7 @@ namespace PolyFrac
     const std::string &symptom,
     const unsigned int iteration) const
   {
-    return "In <" + prm.file_name +
+    return "In <" + context.file_name +
            ">: the Newton Jacobian of the contact problem is singular or "
            "nearly so at iteration " +
            std::to_string(iteration) + " (" + symptom +
@@ -575,7 +583,7 @@ namespace PolyFrac
            "contact (free to slide when frictionless or slipping), or by "
            "none once they open. Give every such block a Dirichlet boundary "
            "(Boundary conditions/Dirichlet boundary ids)" +
-           (prm.contact.bubbles ?
+           (prm.bubbles ?
               std::string(".") :
               "; with Contact/Bubbles = false some multiplier patterns are "
               "moreover invisible to the discrete jumps: set Bubbles = "
@@ -687,7 +695,7 @@ namespace PolyFrac
       return R.momentum * R.momentum + R.complementarity * R.complementarity;
     };
 
-    for (unsigned int it = 1; it <= prm.nonlinear.max_iterations; ++it)
+    for (unsigned int it = 1; it <= nonlinear.max_iterations; ++it)
       {
         const Residual R = residual(x, load);
         ++total_iterations;
@@ -740,8 +748,8 @@ namespace PolyFrac
             continue;
           }
 
-        if (states == last_states && R.momentum < prm.nonlinear.tolerance &&
-            R.complementarity < prm.nonlinear.tolerance)
+        if (states == last_states && R.momentum < nonlinear.tolerance &&
+            R.complementarity < nonlinear.tolerance)
           return true;
 
         // The active set cycles (a state seen before) or stagnates (no new
@@ -872,10 +880,10 @@ namespace PolyFrac
                                const MechanicalState<dim> *guess)
   {
     begin_step(state);
-    if (guess && prm.contact.n_load_steps == 1)
+    if (guess && prm.n_load_steps == 1)
       set_solution(*guess);
 
-    const unsigned int n_steps = prm.contact.n_load_steps;
+    const unsigned int n_steps = prm.n_load_steps;
     double             reached = 0;
     for (unsigned int k = 1; k <= n_steps; ++k)
       {
@@ -916,7 +924,7 @@ namespace PolyFrac
                               "factor " +
                               std::to_string(load) + " (" + friction->name() +
                               "): Newton reached " +
-                              std::to_string(prm.nonlinear.max_iterations) +
+                              std::to_string(nonlinear.max_iterations) +
                               " iterations, after dividing the "
                               "complementarity parameter by 10 (" +
                               std::to_string(n_beta_reductions) +
@@ -969,8 +977,8 @@ namespace PolyFrac
         std::ostringstream what;
         what << "no equilibrium found from the state of the previous step "
                 "(Newton reached "
-             << prm.nonlinear.max_iterations << " iterations, "
-             << friction->name() << ").";
+             << nonlinear.max_iterations << " iterations, " << friction->name()
+             << ").";
         const unsigned int n_weakening = n_weakening_faces(state);
         if (n_weakening > 0)
           throw QuasiStaticInstability(what.str() + " " +
@@ -1119,18 +1127,6 @@ namespace PolyFrac
       out << "  " << n_krylov_fallbacks << " condensed steps fell back to "
           << (dofs.is_distributed() ? "MUMPS" : "UMFPACK")
           << " (GMRES did not converge)" << std::endl;
-    if (condensation && prm.output.print_timings)
-      {
-        const auto &times = condensation->phase_times();
-        out << "  Condensed steps: " << times.n_steps << " ("
-            << times.n_amg_setups << " AMG set-ups, " << times.n_iterations
-            << " Krylov iterations); wall: reduced operators "
-            << times.reduced_operator << " s, AMG set-ups " << times.amg_setup
-            << " s, band factorisations " << times.band_factorization
-            << " s, Krylov " << times.krylov << " s, the rest " << times.other
-            << " s" << std::endl;
-      }
-
     state.displacement.reinit(dofs.n_displacement_dofs());
     for (unsigned int k = 0; k < state.displacement.size(); ++k)
       state.displacement(k) = solution(k);
@@ -1139,6 +1135,24 @@ namespace PolyFrac
       state.multipliers.push_back(face_multiplier(solution, i));
     state.contact = states;
     state.slip    = previous_slip;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::print_condensation_times(std::ostream &out) const
+  {
+    if (!condensation)
+      return;
+    const auto &times = condensation->phase_times();
+    out << "  Condensed steps: " << times.n_steps << " (" << times.n_amg_setups
+        << " AMG set-ups, " << times.n_iterations
+        << " Krylov iterations); wall: reduced operators "
+        << times.reduced_operator << " s, AMG set-ups " << times.amg_setup
+        << " s, band factorisations " << times.band_factorization
+        << " s, Krylov " << times.krylov << " s, the rest " << times.other
+        << " s" << std::endl;
   }
 
 

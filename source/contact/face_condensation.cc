@@ -43,7 +43,7 @@ namespace PolyFrac
     const std::vector<BlockCoefficients>            &jumps,
     const std::map<types::global_dof_index, double> &dirichlet,
     const std::vector<Point<dim>>                   &vertices,
-    const Parameters::SolverData                    &solver)
+    const LinearSolverParameters                    &solver)
     : stiffness(stiffness)
     , dofs(dofs)
     , jumps(jumps)
@@ -785,7 +785,7 @@ namespace PolyFrac
         // reach the tolerance it is built again, for this operator, and
         // the solve starts over. On the 3D Coulomb network at 48^3 GMRES
         // stalled with the AMG of the last load step.
-        Parameters::SolverData limited = solver;
+        LinearSolverParameters limited = solver;
         limited.max_iterations =
           std::min(solver.max_iterations, reused_amg_iterations);
         std::tie(krylov.iterations, krylov.converged) = krylov_solve(
@@ -896,7 +896,7 @@ namespace PolyFrac
     const FractureBandPreconditioner     *band_preconditioner,
     const TrilinosWrappers::SparseMatrix &matrix,
     const Vector<double>                 &rhs,
-    const Parameters::SolverData         &limits,
+    const LinearSolverParameters         &limits,
     const double                          enough,
     Vector<double>                       &y)
   {

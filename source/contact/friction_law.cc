@@ -8,8 +8,8 @@ namespace PolyFrac
   {
     namespace
     {
-      /** The name of the law chosen in the subsection Contact of @p prm
-       * (entered). */
+      /** The name of the law chosen in @p prm (the subsection Contact,
+       * entered, or ContactParameters::friction_law). */
       std::string
       chosen(ParameterHandler &prm)
       {
@@ -127,45 +127,48 @@ namespace PolyFrac
 
     template <int dim>
     std::unique_ptr<FrictionLaw<dim>>
-    create(const Parameters &prm, const std::vector<Point<dim>> &centroids)
+    create(const ContactParameters       &prm,
+           const ParameterContext        &context,
+           const std::vector<Point<dim>> &centroids)
     {
-      std::unique_ptr<FrictionLaw<dim>> law;
-      prm.read_subsection("Contact",
-                          [&](ParameterHandler       &handler,
-                              const ParameterContext &context) {
-                            law = factory<dim>(find(
-                              chosen(handler)))(handler, context, centroids);
-                          });
-      return law;
+      ParameterHandler &entries = *prm.friction_law;
+      return factory<dim>(find(chosen(entries)))(entries, context, centroids);
     }
 
 
 
     template <int dim>
     std::unique_ptr<FrictionLaw<dim>>
-    create(const Parameters           &prm,
+    create(const ContactParameters    &prm,
+           const ParameterContext     &context,
            const MeshGeometry<dim>    &geometry,
            const FractureNetwork<dim> &network)
     {
       std::vector<Point<dim>> centroids;
       for (const auto &fracture_face : network.fracture_faces)
         centroids.push_back(geometry.faces[fracture_face.face].centroid);
-      return create(prm, centroids);
+      return create(prm, context, centroids);
     }
 
 
 
     template std::unique_ptr<FrictionLaw<2>>
-    create(const Parameters &, const std::vector<Point<2>> &);
+    create(const ContactParameters &,
+           const ParameterContext &,
+           const std::vector<Point<2>> &);
     template std::unique_ptr<FrictionLaw<2>>
-    create(const Parameters &,
+    create(const ContactParameters &,
+           const ParameterContext &,
            const MeshGeometry<2> &,
            const FractureNetwork<2> &);
     template std::unique_ptr<FrictionLaw<3>>
-    create(const Parameters &,
+    create(const ContactParameters &,
+           const ParameterContext &,
            const MeshGeometry<3> &,
            const FractureNetwork<3> &);
     template std::unique_ptr<FrictionLaw<3>>
-    create(const Parameters &, const std::vector<Point<3>> &);
+    create(const ContactParameters &,
+           const ParameterContext &,
+           const std::vector<Point<3>> &);
   } // namespace FrictionLaws
 } // namespace PolyFrac

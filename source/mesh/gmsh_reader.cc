@@ -5,7 +5,6 @@
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/grid/tria_iterator.h>
 
-#include <polyfrac/base/memory_estimate.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/mesh/gmsh_reader.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
@@ -286,19 +285,17 @@ namespace PolyFrac
     }
 
     /**
-     * Opens Mesh/File name in gmsh and meshes it if it is a `.geo`;
-     * refuses (check_memory()) a refinement whose cells would not fit in
-     * the memory of this node, shared by its ranks of @p communicator;
-     * refines @p n_refinements times.
+     * Opens @p file_name in gmsh and meshes it if it is a `.geo`; calls
+     * @p check_n_cells with the number of cells @p n_refinements
+     * refinements will make (which may refuse them), then refines.
      */
     void
-    open_and_mesh(GmshSession       &session,
-                  const Parameters  &prm,
-                  const int          dim,
-                  const unsigned int n_refinements,
-                  const MPI_Comm     communicator)
+    open_and_mesh(GmshSession                       &session,
+                  const std::string                 &file_name,
+                  const int                          dim,
+                  const unsigned int                 n_refinements,
+                  const std::function<void(double)> &check_n_cells)
     {
-      const std::string &file_name = prm.mesh.file_name;
       run_gmsh(session, file_name, [&]() {
         gmsh::open(file_name);
         const bool is_geo =
@@ -307,10 +304,8 @@ namespace PolyFrac
         if (is_geo)
           gmsh::model::mesh::generate(dim);
       });
-      check_memory(prm,
-                   n_elements(dim) * std::pow(2., dim * n_refinements),
-                   n_ranks_on_this_node(communicator),
-                   n_mpi_ranks(communicator));
+      if (check_n_cells)
+        check_n_cells(n_elements(dim) * std::pow(2., dim * n_refinements));
       run_gmsh(session, file_name, [&]() {
         for (unsigned int r = 0; r < n_refinements; ++r)
           gmsh::model::mesh::refine();
@@ -519,19 +514,20 @@ namespace PolyFrac
 
   template <int dim>
   GmshMesh<dim>
-  read_gmsh(const Parameters   &prm,
-            const unsigned int  n_refinements,
-            const MPI_Comm      communicator,
-            Triangulation<dim> &tria)
+  read_gmsh(const std::string                 &file_name,
+            const std::vector<int>            &fracture_tags,
+            const unsigned int                 n_refinements,
+            Triangulation<dim>                &tria,
+            const std::function<void(double)> &check_n_cells)
   {
-    const std::string &file_name = prm.mesh.file_name;
     AssertThrow(std::ifstream(file_name).good(),
                 ExcMessage("The gmsh mesh <" + file_name +
                            "> cannot be opened: check Mesh/File name."));
 #ifndef POLYFRAC_WITH_GMSH_API
+    (void)fracture_tags;
     (void)n_refinements;
-    (void)communicator;
     (void)tria;
+    (void)check_n_cells;
     AssertThrow(false,
                 ExcMessage("Cannot read the gmsh mesh <" + file_name +
                            ">: PolyFrac was built without the gmsh C++ API "
@@ -541,7 +537,7 @@ namespace PolyFrac
 #else
     const std::string in_file = "The gmsh mesh <" + file_name + ">";
     GmshSession       session;
-    open_and_mesh(session, prm, dim, n_refinements, communicator);
+    open_and_mesh(session, file_name, dim, n_refinements, check_n_cells);
     // gmsh reports an empty model (an empty or foreign file) as of
     // dimension -1.
     AssertThrow(gmsh::model::getDimension() >= 0,
@@ -564,8 +560,7 @@ namespace PolyFrac
       read_vertices<dim>(numbering, in_file);
     create_cells(cells, numbering, vertices, tria);
 
-    const std::vector<int> &fracture_tags = prm.fractures.gmsh_physical_tags;
-    gmsh::vectorpair        groups;
+    gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups, dim - 1);
     set_boundary_ids(groups, fracture_tags, numbering, file_name, tria);
 
@@ -643,10 +638,11 @@ namespace PolyFrac
 
 
   template GmshMesh<2>
-  read_gmsh(const Parameters &,
+  read_gmsh(const std::string &,
+            const std::vector<int> &,
             const unsigned int,
-            const MPI_Comm,
-            Triangulation<2> &);
+            Triangulation<2> &,
+            const std::function<void(double)> &);
   template GmshMesh<2>
   fracture_elements_after_refinement(const GmshMesh<2> &,
                                      const Triangulation<2> &);
@@ -654,8 +650,9 @@ namespace PolyFrac
   fracture_elements_after_refinement(const GmshMesh<3> &,
                                      const Triangulation<3> &);
   template GmshMesh<3>
-  read_gmsh(const Parameters &,
+  read_gmsh(const std::string &,
+            const std::vector<int> &,
             const unsigned int,
-            const MPI_Comm,
-            Triangulation<3> &);
+            Triangulation<3> &,
+            const std::function<void(double)> &);
 } // namespace PolyFrac

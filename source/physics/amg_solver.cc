@@ -143,7 +143,7 @@ namespace PolyFrac
                VectorType                           &x,
                const VectorType                     &rhs,
                const PreconditionerType             &preconditioner,
-               const Parameters::SolverData         &solver,
+               const LinearSolverParameters         &solver,
                const double                          enough)
   {
     SolverControl control(solver.max_iterations,
@@ -197,7 +197,7 @@ namespace PolyFrac
                const VectorType                     &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
-               const Parameters::SolverData         &solver)
+               const LinearSolverParameters         &solver)
   {
     TrilinosWrappers::PreconditionAMG amg;
     initialize_amg(amg,
@@ -239,7 +239,7 @@ namespace PolyFrac
                Vector<double> &,
                const Vector<double> &,
                const TrilinosWrappers::PreconditionAMG &,
-               const Parameters::SolverData &,
+               const LinearSolverParameters &,
                const double);
   template std::pair<unsigned int, bool>
   solve_krylov(const bool,
@@ -247,7 +247,7 @@ namespace PolyFrac
                Vector<double> &,
                const Vector<double> &,
                const FractureBandPreconditioner &,
-               const Parameters::SolverData &,
+               const LinearSolverParameters &,
                const double);
   template std::pair<unsigned int, bool>
   solve_krylov(const bool,
@@ -255,7 +255,7 @@ namespace PolyFrac
                TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::PreconditionAMG &,
-               const Parameters::SolverData &,
+               const LinearSolverParameters &,
                const double);
   template std::pair<unsigned int, bool>
   solve_krylov(const bool,
@@ -263,7 +263,7 @@ namespace PolyFrac
                TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::MPI::Vector &,
                const FractureBandPreconditioner &,
-               const Parameters::SolverData &,
+               const LinearSolverParameters &,
                const double);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
@@ -271,26 +271,26 @@ namespace PolyFrac
                const Vector<double> &,
                const DoFMap<2> &,
                const std::vector<Point<2>> &,
-               const Parameters::SolverData &);
+               const LinearSolverParameters &);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                Vector<double> &,
                const Vector<double> &,
                const DoFMap<3> &,
                const std::vector<Point<3>> &,
-               const Parameters::SolverData &);
+               const LinearSolverParameters &);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::MPI::Vector &,
                const DoFMap<2> &,
                const std::vector<Point<2>> &,
-               const Parameters::SolverData &);
+               const LinearSolverParameters &);
   template unsigned int
   solve_cg_amg(const TrilinosWrappers::SparseMatrix &,
                TrilinosWrappers::MPI::Vector &,
                const TrilinosWrappers::MPI::Vector &,
                const DoFMap<3> &,
                const std::vector<Point<3>> &,
-               const Parameters::SolverData &);
+               const LinearSolverParameters &);
 } // namespace PolyFrac

@@ -10,15 +10,17 @@
 namespace PolyFrac
 {
   template <int dim>
-  BiotSystem<dim>::BiotSystem(const Parameters          &prm,
-                              const DoFMap<dim>         &dofs,
-                              const PressureDoFMap<dim> &pressure_dofs,
-                              const Flow<dim>           &flow,
-                              const BiotCoupling<dim>   &coupling,
-                              Elasticity<dim>           &elasticity,
-                              const FaceBubbles<dim>    &bubbles,
-                              const Unknowns             unknowns)
-    : prm(prm)
+  BiotSystem<dim>::BiotSystem(const LinearSolverParameters &solver,
+                              const ParameterContext       &context,
+                              const DoFMap<dim>            &dofs,
+                              const PressureDoFMap<dim>    &pressure_dofs,
+                              const Flow<dim>              &flow,
+                              const BiotCoupling<dim>      &coupling,
+                              Elasticity<dim>              &elasticity,
+                              const FaceBubbles<dim>       &bubbles,
+                              const Unknowns                unknowns)
+    : solver(solver)
+    , context(context)
     , dofs(dofs)
     , pressure_dofs(pressure_dofs)
     , flow(flow)
@@ -30,10 +32,10 @@ namespace PolyFrac
     , n_s(bubbles.n_bubbles())
     , n_p(pressure_dofs.n_dofs())
     , iterative(unknowns == Unknowns::bubbles_and_pressures &&
-                prm.solver.method != SolverMethod::direct)
+                solver.method != SolverMethod::direct)
   {
     AssertThrow(!dofs.is_distributed(),
-                ExcMessage("In <" + prm.file_name +
+                ExcMessage("In <" + context.file_name +
                            ">: the normal face bubbles of poromechanics (the "
                            "stable displacement-pressure pair) are not yet "
                            "available on several ranks: run on one rank."));
@@ -133,7 +135,7 @@ namespace PolyFrac
         elasticity.assemble_operator(matrix, unused);
       }
     bubbles.add_stiffness(matrix, n_u, all);
-    const double b = prm.flow.biot_coefficient;
+    const double b = flow.parameters().biot_coefficient;
     for_each_volume_coupling(coupling,
                              &bubbles,
                              pressure_dofs,
@@ -252,8 +254,8 @@ namespace PolyFrac
     const auto operator_ = linear_operator<Vector<double>>(constrained_matrix);
     auto       inverse   = linear_operator<Vector<double>>(constrained_matrix);
     inverse.vmult        = preconditioner;
-    SolverControl                control(prm.solver.max_iterations,
-                          prm.solver.tolerance * rhs.l2_norm());
+    SolverControl                control(solver.max_iterations,
+                          solver.tolerance * rhs.l2_norm());
     SolverMinRes<Vector<double>> minres(control);
     try
       {
@@ -356,7 +358,7 @@ namespace PolyFrac
                                 const MechanicalState<dim> &before,
                                 Vector<double>             &rhs) const
   {
-    const double              b = prm.flow.biot_coefficient;
+    const double              b = flow.parameters().biot_coefficient;
     const std::vector<double> bubble_volume =
       bubbles.volume_changes(before.face_bubbles);
     for (unsigned int i = 0; i < n_p; ++i)
@@ -407,7 +409,7 @@ namespace PolyFrac
     for (unsigned int j = 0; j < n_s; ++j)
       rhs(n_u + j) = s_load(j);
     add_mass_rhs(data, flow_rhs, before, rhs);
-    const double              b = prm.flow.biot_coefficient;
+    const double              b = flow.parameters().biot_coefficient;
     const std::vector<double> volume =
       coupling.volume_changes(before.displacement);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)

@@ -25,31 +25,35 @@ namespace PolyFrac
 
 
   template <int dim>
-  Elasticity<dim>::Elasticity(const Parameters           &prm,
-                              const MeshGeometry<dim>    &geometry,
-                              const FractureNetwork<dim> &network,
-                              const DoFMap<dim>          &dofs)
-    : prm(prm)
+  Elasticity<dim>::Elasticity(const MechanicsParameters    &mechanics,
+                              const LinearSolverParameters &solver,
+                              const ParameterContext       &context,
+                              const MeshGeometry<dim>      &geometry,
+                              const FractureNetwork<dim>   &network,
+                              const DoFMap<dim>            &dofs)
+    : mechanics(mechanics)
+    , solver(solver)
+    , context(context)
     , geometry(geometry)
     , network(network)
     , dofs(dofs)
     , body_force(make_body_force(0.))
     , dirichlet(make_expression<dim>("Boundary conditions/Dirichlet expression",
-                                     prm.boundary.dirichlet_expression,
+                                     mechanics.boundary.dirichlet_expression,
                                      dim,
-                                     prm.constants))
+                                     context.constants))
     , neumann(make_expression<dim>("Boundary conditions/Neumann traction",
-                                   prm.boundary.neumann_traction,
+                                   mechanics.boundary.neumann_traction,
                                    dim,
-                                   prm.constants))
+                                   context.constants))
     , fracture_pressure(make_expression<dim>("Fractures/Pressure",
-                                             prm.fractures.pressure,
+                                             mechanics.fracture_pressure,
                                              1,
-                                             prm.constants))
+                                             context.constants))
     , traction(make_expression<dim>("Fractures/Traction",
-                                    prm.fractures.traction,
+                                    mechanics.fracture_traction,
                                     dim,
-                                    prm.constants))
+                                    context.constants))
     , initial_stress(make_initial_stress(0.))
   {}
 
@@ -60,9 +64,9 @@ namespace PolyFrac
   Elasticity<dim>::make_body_force(const double time) const
   {
     auto force = make_expression<dim>("Body force/Function expression",
-                                      prm.body_force,
+                                      mechanics.body_force,
                                       dim,
-                                      prm.constants);
+                                      context.constants);
     force->set_time(time);
     return force;
   }
@@ -74,9 +78,9 @@ namespace PolyFrac
   Elasticity<dim>::make_initial_stress(const double time) const
   {
     auto stress = make_expression<dim>("Initial stress/Stress",
-                                       prm.initial_stress,
+                                       mechanics.initial_stress,
                                        dim * dim,
-                                       prm.constants);
+                                       context.constants);
     stress->set_time(time);
     return stress;
   }
@@ -88,7 +92,7 @@ namespace PolyFrac
   Elasticity<dim>::make_constraints()
   {
     const auto &mesh         = geometry.mesh;
-    const auto &ids          = prm.boundary;
+    const auto &ids          = mechanics.boundary;
     const auto  is_dirichlet = [&ids](const types::boundary_id id) {
       const auto listed = [id](const std::vector<unsigned> &list) {
         return std::find(list.begin(), list.end(), id) != list.end();
@@ -138,14 +142,14 @@ namespace PolyFrac
             }
         }
     AssertThrow(has_dirichlet_face,
-                ExcMessage("In <" + prm.file_name +
+                ExcMessage("In <" + context.file_name +
                            ">: no boundary face is Dirichlet, so rigid motions "
                            "are free. Set Boundary conditions/Dirichlet "
                            "boundary ids (or leave it empty and list fewer "
                            "Neumann ids)."));
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(fixed_somewhere[d],
-                  ExcMessage("In <" + prm.file_name +
+                  ExcMessage("In <" + context.file_name +
                              ">: no Dirichlet boundary face fixes the " +
                              std::string(1, "xyz"[d]) +
                              " component, so rigid motions are free: fix it "
@@ -171,7 +175,7 @@ namespace PolyFrac
                            const std::vector<unsigned> &ids) {
       for (const unsigned int id : ids)
         AssertThrow(mesh_ids.count(id) == 1,
-                    ExcMessage("In <" + prm.file_name +
+                    ExcMessage("In <" + context.file_name +
                                ">: Boundary conditions/" + entry +
                                " lists the id " + std::to_string(id) +
                                ", which no boundary face of the mesh carries. "
@@ -180,10 +184,10 @@ namespace PolyFrac
                                " (generated boxes: 0/1 at x min/max, 2/3 at "
                                "y, 4/5 at z)."));
     };
-    check("Dirichlet boundary ids", prm.boundary.dirichlet_ids);
-    check("Neumann boundary ids", prm.boundary.neumann_ids);
+    check("Dirichlet boundary ids", mechanics.boundary.dirichlet_ids);
+    check("Neumann boundary ids", mechanics.boundary.neumann_ids);
     std::vector<unsigned> roller_ids;
-    for (const auto &[id, components] : prm.boundary.dirichlet_components)
+    for (const auto &[id, components] : mechanics.boundary.dirichlet_components)
       roller_ids.push_back(id);
     check("Dirichlet components", roller_ids);
   }
@@ -194,9 +198,9 @@ namespace PolyFrac
   FullMatrix<double>
   Elasticity<dim>::local_stiffness(const LocalReconstruction<dim> &local) const
   {
-    const double             mu = prm.lame_mu, lambda = prm.lame_lambda;
-    const unsigned int       n = local.n_local();
-    const auto              &G = local.gradient_coefficients;
+    const double       mu = mechanics.lame_mu, lambda = mechanics.lame_lambda;
+    const unsigned int n       = local.n_local();
+    const auto        &G       = local.gradient_coefficients;
     const FullMatrix<double> S = local.stabilisation();
     FullMatrix<double>       A(dim * n, dim * n);
     // For u = e_i G_t-shaped and v = e_j G_r-shaped:
@@ -235,7 +239,7 @@ namespace PolyFrac
     // Distributed, both methods assemble a Trilinos matrix whose rows each
     // rank owns; the right-hand side is summed over the ranks.
     const bool trilinos =
-      prm.solver.method != SolverMethod::direct || dofs.is_distributed();
+      solver.method != SolverMethod::direct || dofs.is_distributed();
     const auto make_matrix = [&]() {
       if (dofs.is_distributed())
         {
@@ -540,7 +544,7 @@ namespace PolyFrac
   bool
   Elasticity<dim>::on_neumann_boundary(const unsigned int face) const
   {
-    const auto &ids = prm.boundary.neumann_ids;
+    const auto &ids = mechanics.boundary.neumann_ids;
     return geometry.mesh.faces[face].at_boundary() &&
            std::find(ids.begin(),
                      ids.end(),
@@ -565,7 +569,7 @@ namespace PolyFrac
         std::ostringstream where;
         where << x << ": " << sigma0;
         AssertThrow(false,
-                    ExcMessage("In <" + prm.file_name +
+                    ExcMessage("In <" + context.file_name +
                                ">: Initial stress/Stress is not symmetric at " +
                                where.str() +
                                " (rows separated like the entries); a stress "
@@ -606,7 +610,7 @@ namespace PolyFrac
     unsigned int iterations = 0;
     if (dofs.is_distributed())
       iterations = solve_distributed(load, u);
-    else if (prm.solver.method == SolverMethod::direct)
+    else if (solver.method == SolverMethod::direct)
       {
         if (!direct)
           {
@@ -617,7 +621,7 @@ namespace PolyFrac
       }
     else
       iterations = solve_cg_amg(
-        trilinos_matrix, u, load, dofs, geometry.mesh.vertices, prm.solver);
+        trilinos_matrix, u, load, dofs, geometry.mesh.vertices, solver);
     constraints.distribute(u);
 
     state.multipliers.clear();
@@ -640,7 +644,7 @@ namespace PolyFrac
       dofs.get_communicator(),
       load,
       [&](auto &x, const auto &b) {
-        if (prm.solver.method == SolverMethod::direct)
+        if (solver.method == SolverMethod::direct)
           {
             if (!distributed_direct)
               {
@@ -655,7 +659,7 @@ namespace PolyFrac
           }
         else
           iterations = solve_cg_amg(
-            trilinos_matrix, x, b, dofs, geometry.mesh.vertices, prm.solver);
+            trilinos_matrix, x, b, dofs, geometry.mesh.vertices, solver);
       });
     return iterations;
   }
@@ -694,8 +698,9 @@ namespace PolyFrac
   Elasticity<dim>::stress(const Tensor<2, dim> &gradient) const
   {
     const Tensor<2, dim> strain = 0.5 * (gradient + transpose(gradient));
-    return 2 * prm.lame_mu * strain +
-           prm.lame_lambda * trace(gradient) * unit_symmetric_tensor<dim>();
+    return 2 * mechanics.lame_mu * strain + mechanics.lame_lambda *
+                                              trace(gradient) *
+                                              unit_symmetric_tensor<dim>();
   }
 
 

@@ -35,33 +35,37 @@ namespace PolyFrac
 
 
   template <int dim>
-  Flow<dim>::Flow(const Parameters           &prm,
-                  const MeshGeometry<dim>    &geometry,
-                  const FractureNetwork<dim> &network,
-                  const FractureEdges<dim>   &edges,
-                  const PressureDoFMap<dim>  &dofs)
+  Flow<dim>::Flow(const FlowParameters         &prm,
+                  const LinearSolverParameters &solver,
+                  const ParameterContext       &context,
+                  const MeshGeometry<dim>      &geometry,
+                  const FractureNetwork<dim>   &network,
+                  const FractureEdges<dim>     &edges,
+                  const PressureDoFMap<dim>    &dofs)
     : prm(prm)
+    , solver(solver)
+    , context(context)
     , geometry(geometry)
     , network(network)
     , edges(edges)
     , dofs(dofs)
     , matrix_source(make_expression<dim>("Flow/Matrix source",
-                                         prm.flow.matrix_source,
+                                         prm.matrix_source,
                                          1,
-                                         prm.constants))
+                                         context.constants))
     , fracture_source(make_expression<dim>("Flow/Fracture source",
-                                           prm.flow.fracture_source,
+                                           prm.fracture_source,
                                            1,
-                                           prm.constants))
+                                           context.constants))
     , boundary_pressure(
         make_expression<dim>("Flow/Pressure boundary expression",
-                             prm.flow.pressure_expression,
+                             prm.pressure_expression,
                              1,
-                             prm.constants))
+                             context.constants))
     , boundary_flux(make_expression<dim>("Flow/Flux boundary expression",
-                                         prm.flow.flux_expression,
+                                         prm.flux_expression,
                                          1,
-                                         prm.constants))
+                                         context.constants))
   {
     const auto                  &mesh = geometry.mesh;
     std::set<types::boundary_id> mesh_ids;
@@ -73,11 +77,11 @@ namespace PolyFrac
       ids += (ids.empty() ? "" : ", ") + std::to_string(id);
     for (const auto &[entry, list] :
          {std::make_pair(std::string("Pressure boundary ids"),
-                         &prm.flow.pressure_ids),
-          std::make_pair(std::string("Flux boundary ids"), &prm.flow.flux_ids)})
+                         &prm.pressure_ids),
+          std::make_pair(std::string("Flux boundary ids"), &prm.flux_ids)})
       for (const unsigned int id : *list)
         AssertThrow(mesh_ids.count(id) == 1,
-                    ExcMessage("In <" + prm.file_name + ">: Flow/" + entry +
+                    ExcMessage("In <" + context.file_name + ">: Flow/" + entry +
                                " lists the id " + std::to_string(id) +
                                ", which no boundary face of the mesh carries. "
                                "The mesh has the boundary ids " +
@@ -86,11 +90,11 @@ namespace PolyFrac
                                "y, 4/5 at z)."));
 
     const auto   permeability = make_expression<dim>("Flow/Permeability",
-                                                   prm.flow.permeability,
+                                                   prm.permeability,
                                                    1,
-                                                   prm.constants);
+                                                   context.constants);
     const double alpha =
-      prm.flow.stabilisation > 0 ? prm.flow.stabilisation : std::sqrt(dim);
+      prm.stabilisation > 0 ? prm.stabilisation : std::sqrt(dim);
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         const Point<dim> &x = geometry.cells[c].centroid;
@@ -98,20 +102,20 @@ namespace PolyFrac
         if (k < 0)
           {
             std::ostringstream what;
-            what << "In <" << prm.file_name << ">: Flow/Permeability is " << k
-                 << " < 0 at the point " << x
+            what << "In <" << context.file_name << ">: Flow/Permeability is "
+                 << k << " < 0 at the point " << x
                  << "; a permeability must be >= 0.";
             AssertThrow(false, ExcMessage(what.str()));
           }
-        const double mobility = k / prm.flow.viscosity;
+        const double mobility = k / prm.viscosity;
         if (k > 0 && !std::isnormal(mobility))
           {
             // A denormal or infinite k/η has lost its digits, and the flow
             // matrix is singular or infinite.
             std::ostringstream what;
-            what << "In <" << prm.file_name << ">: Flow/Permeability = " << k
-                 << " at the point " << x
-                 << " with Flow/Viscosity = " << prm.flow.viscosity
+            what << "In <" << context.file_name
+                 << ">: Flow/Permeability = " << k << " at the point " << x
+                 << " with Flow/Viscosity = " << prm.viscosity
                  << " gives the mobility k/viscosity = " << mobility
                  << ", beyond the range of double precision: give the "
                     "permeability in m^2 (about 1e-20 to 1e-10) and the "
@@ -122,7 +126,7 @@ namespace PolyFrac
         cell_matrices.push_back(cell_hfv_matrix(geometry, c, alpha));
       }
     const double fracture_alpha =
-      prm.flow.stabilisation > 0 ? prm.flow.stabilisation : std::sqrt(dim - 1.);
+      prm.stabilisation > 0 ? prm.stabilisation : std::sqrt(dim - 1.);
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       fracture_matrices.push_back(
         fracture_hfv_matrix(geometry, network, edges, i, fracture_alpha));
@@ -137,14 +141,13 @@ namespace PolyFrac
     FlowStepData data;
     data.time      = time;
     data.time_step = time_step;
-    data.storage.assign(geometry.mesh.n_cells(), prm.flow.inverse_biot_modulus);
+    data.storage.assign(geometry.mesh.n_cells(), prm.inverse_biot_modulus);
     data.cell_rhs.assign(geometry.mesh.n_cells(), 0.);
     data.fracture_storage.assign(network.n_fracture_faces(),
                                  fracture_fluid_storage(
-                                   prm.flow.aperture_at_contact));
+                                   prm.aperture_at_contact));
     data.fracture_rhs.assign(network.n_fracture_faces(), 0.);
-    data.apertures.assign(network.n_fracture_faces(),
-                          prm.flow.aperture_at_contact);
+    data.apertures.assign(network.n_fracture_faces(), prm.aperture_at_contact);
     return data;
   }
 
@@ -155,7 +158,7 @@ namespace PolyFrac
   Flow<dim>::initial_pressure() const
   {
     return interpolate(*make_expression<dim>(
-      "Flow/Initial pressure", prm.flow.initial_pressure, 1, prm.constants));
+      "Flow/Initial pressure", prm.initial_pressure, 1, context.constants));
   }
 
 
@@ -186,8 +189,8 @@ namespace PolyFrac
   double
   Flow<dim>::fracture_fluid_storage(const double aperture) const
   {
-    return std::max(aperture, prm.flow.minimum_aperture) *
-           prm.flow.fracture_compressibility;
+    return std::max(aperture, prm.minimum_aperture) *
+           prm.fracture_compressibility;
   }
 
 
@@ -196,8 +199,8 @@ namespace PolyFrac
   double
   Flow<dim>::fracture_conductivity(const double aperture) const
   {
-    const double d = std::max(aperture, prm.flow.minimum_aperture);
-    return d * d * d / (12 * prm.flow.viscosity);
+    const double d = std::max(aperture, prm.minimum_aperture);
+    return d * d * d / (12 * prm.viscosity);
   }
 
 
@@ -231,7 +234,7 @@ namespace PolyFrac
   Flow<dim>::active(const unsigned int c, const FlowStepData &data) const
   {
     return cell_mobility[c] > 0 || data.storage[c] > 0 ||
-           (data.volume_coupled && prm.flow.biot_coefficient != 0);
+           (data.volume_coupled && prm.biot_coefficient != 0);
   }
 
 
@@ -243,7 +246,7 @@ namespace PolyFrac
                               AffineConstraints<double> &constraints) const
   {
     const auto &mesh = geometry.mesh;
-    const auto &flow = prm.flow;
+    const auto &flow = prm;
     boundary_pressure->set_time(data.time);
     // Prescribed pressures: Pressure boundary faces and fracture edges.
     constraints.clear();
@@ -272,7 +275,7 @@ namespace PolyFrac
                     boundary_pressure->value(edges.edges[e].centroid));
     AssertThrow(!constraints.get_lines().empty() || has_storage ||
                   data.volume_coupled,
-                ExcMessage("In <" + prm.file_name +
+                ExcMessage("In <" + context.file_name +
                            ">: the flow problem has neither a prescribed "
                            "pressure nor storage, so its pressure is known "
                            "only up to a constant. Set Flow/Pressure "
@@ -336,7 +339,7 @@ namespace PolyFrac
                       Vector<double>                  &rhs) const
   {
     const auto  &mesh = geometry.mesh;
-    const auto  &flow = prm.flow;
+    const auto  &flow = prm;
     const double dt   = data.time_step;
     AssertThrow(dt > 0, ExcMessage("Flow: the time step must be > 0."));
     matrix_source->set_time(data.time);
@@ -498,7 +501,7 @@ namespace PolyFrac
             where << "the cell at (" << geometry.cells[c].centroid << ")";
         AssertThrow(false,
                     ExcMessage(
-                      "In <" + prm.file_name +
+                      "In <" + context.file_name +
                       ">: a part of the flow "
                       "domain (" +
                       std::to_string(part.size()) + " unknowns, among them " +
@@ -533,7 +536,7 @@ namespace PolyFrac
         SparseMatrix<double> matrix;
         make_serial_matrix(sparsity, matrix);
         assemble(data, previous, constraints, matrix, rhs);
-        if (prm.solver.method == SolverMethod::direct)
+        if (solver.method == SolverMethod::direct)
           {
             SparseDirectUMFPACK direct;
             try
@@ -602,7 +605,7 @@ namespace PolyFrac
                           dofs.get_communicator(),
                           rhs,
                           [&](auto &x, const auto &b) {
-                            if (prm.solver.method != SolverMethod::direct)
+                            if (solver.method != SolverMethod::direct)
                               iterations = solve_cg(matrix, b, x);
                             else
                               AssertThrow(solve_by_mumps(matrix, x, b),
@@ -628,8 +631,8 @@ namespace PolyFrac
     // iterations over 20 solves instead of 1,834.
     amg_data.aggregation_threshold = 0.1;
     amg.initialize(matrix, amg_data);
-    SolverControl        control(prm.solver.max_iterations,
-                          prm.solver.tolerance * rhs.l2_norm());
+    SolverControl        control(solver.max_iterations,
+                          solver.tolerance * rhs.l2_norm());
     SolverCG<VectorType> cg(control);
     try
       {
@@ -716,17 +719,17 @@ namespace PolyFrac
     local_dofs = fracture_dofs(i);
     std::vector<double> derivative(local_dofs.size(), 0.);
     const double        d = data.apertures[i];
-    if (d <= prm.flow.minimum_aperture)
+    if (d <= prm.minimum_aperture)
       return derivative;
     // C_σ/η = d³/(12 η) and the storage d c_f, differentiated in d.
-    const double              slope = 3 * d * d / (12 * prm.flow.viscosity);
+    const double              slope = 3 * d * d / (12 * prm.viscosity);
     const FullMatrix<double> &B     = fracture_matrices[i];
     for (unsigned int a = 0; a < local_dofs.size(); ++a)
       for (unsigned int b = 0; b < local_dofs.size(); ++b)
         derivative[a] += slope * B(a, b) * pressure(local_dofs[b]);
     const double measure =
       geometry.faces[network.fracture_faces[i].face].measure;
-    derivative[0] += measure * prm.flow.fracture_compressibility *
+    derivative[0] += measure * prm.fracture_compressibility *
                      (pressure(local_dofs[0]) - previous(local_dofs[0])) /
                      data.time_step;
     return derivative;
@@ -781,7 +784,7 @@ namespace PolyFrac
                         (p_f - previous(dofs.fracture_face_dof(i))));
         for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
           if (cell_mobility[cell] > 0)
-            terms.push_back(face.measure * prm.flow.normal_transmissibility *
+            terms.push_back(face.measure * prm.normal_transmissibility *
                             (p_f - pressure(dofs.face_dof(ff.face, cell))));
         terms.push_back(-face.measure * (fracture_source->value(face.centroid) +
                                          data.fracture_rhs[i]));

@@ -597,21 +597,22 @@ namespace PolyFrac
   namespace
   {
     /** The value of the scalar expression @p expression of @p entry at
-     * the corners and the centre of the box of @p prm at t = 0; throws
+     * the corners and the centre of the box of @p mesh at t = 0; throws
      * unless it is the same everywhere. */
     template <int dim>
     double
-    constant_value(const Parameters  &prm,
-                   const std::string &entry,
-                   const std::string &expression)
+    constant_value(const MeshParameters   &mesh,
+                   const ParameterContext &context,
+                   const std::string      &entry,
+                   const std::string      &expression)
     {
       const auto function =
-        make_expression<dim>(entry, expression, 1, prm.constants);
+        make_expression<dim>(entry, expression, 1, context.constants);
       Point<dim> lower, upper;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          lower[d] = prm.mesh.lower_left[d];
-          upper[d] = prm.mesh.upper_right[d];
+          lower[d] = mesh.lower_left[d];
+          upper[d] = mesh.upper_right[d];
         }
       const double value = function->value(0.5 * (lower + upper));
       for (unsigned int corner = 0; corner < (1u << dim); ++corner)
@@ -621,7 +622,8 @@ namespace PolyFrac
             x[d] = (corner >> d) & 1 ? upper[d] : lower[d];
           AssertThrow(std::abs(function->value(x) - value) <=
                         1e-12 * std::abs(value),
-                      ExcMessage("In <" + prm.file_name + ">: Exact solution/" +
+                      ExcMessage("In <" + context.file_name +
+                                 ">: Exact solution/" +
                                  "Analytic solution needs a constant " + entry +
                                  ", not <" + expression + ">."));
         }
@@ -632,47 +634,57 @@ namespace PolyFrac
 
 
   PoroelasticData
-  poroelastic_data(const Parameters &prm)
+  poroelastic_data(const MechanicsParameters &mechanics,
+                   const FlowParameters      &flow,
+                   const MeshParameters      &mesh,
+                   const ParameterContext    &context)
   {
     const std::string entry = "Flow/Permeability";
     const double      permeability =
-      prm.dim == 2 ? constant_value<2>(prm, entry, prm.flow.permeability) :
-                          constant_value<3>(prm, entry, prm.flow.permeability);
-    AssertThrow(permeability > 0 && prm.flow.viscosity > 0,
-                ExcMessage("In <" + prm.file_name +
+      context.dim == 2 ?
+             constant_value<2>(mesh, context, entry, flow.permeability) :
+             constant_value<3>(mesh, context, entry, flow.permeability);
+    AssertThrow(permeability > 0 && flow.viscosity > 0,
+                ExcMessage("In <" + context.file_name +
                            ">: Exact solution/Analytic solution needs "
                            "Flow/Permeability > 0 and Flow/Viscosity > 0."));
-    return {prm.lame_lambda,
-            prm.lame_mu,
-            prm.flow.biot_coefficient,
-            prm.flow.inverse_biot_modulus,
-            permeability / prm.flow.viscosity};
+    return {mechanics.lame_lambda,
+            mechanics.lame_mu,
+            flow.biot_coefficient,
+            flow.inverse_biot_modulus,
+            permeability / flow.viscosity};
   }
 
 
 
   std::shared_ptr<const PoroelasticSolution>
-  make_analytic_solution(const Parameters &prm)
+  make_analytic_solution(const ExactSolutionParameters &exact,
+                         const MechanicsParameters     &mechanics,
+                         const FlowParameters          &flow,
+                         const MeshParameters          &mesh,
+                         const ParameterContext        &context)
   {
-    const AnalyticSolution name = prm.exact.analytic_solution;
+    const AnalyticSolution name = exact.analytic_solution;
     if (name == AnalyticSolution::none)
       return nullptr;
-    const Point<3> &lower = prm.mesh.lower_left, &upper = prm.mesh.upper_right;
-    const unsigned int vertical = prm.dim - 1;
+    const Point<3>       &lower = mesh.lower_left, &upper = mesh.upper_right;
+    const unsigned int    vertical = context.dim - 1;
+    const PoroelasticData data =
+      poroelastic_data(mechanics, flow, mesh, context);
     if (name == AnalyticSolution::terzaghi)
-      return std::make_shared<Terzaghi>(poroelastic_data(prm),
+      return std::make_shared<Terzaghi>(data,
                                         upper[vertical] - lower[vertical],
-                                        prm.exact.analytic_load,
+                                        exact.analytic_load,
                                         lower[vertical],
                                         vertical);
-    AssertThrow(name == AnalyticSolution::mandel && prm.dim == 2,
+    AssertThrow(name == AnalyticSolution::mandel && context.dim == 2,
                 ExcMessage("Analytic solution <" + selection_name(name) +
                            "> is not available in dimension " +
-                           std::to_string(prm.dim) + "."));
-    return std::make_shared<Mandel>(poroelastic_data(prm),
+                           std::to_string(context.dim) + "."));
+    return std::make_shared<Mandel>(data,
                                     upper[0] - lower[0],
                                     upper[1] - lower[1],
-                                    prm.exact.analytic_load,
+                                    exact.analytic_load,
                                     Point<2>(lower[0], lower[1]));
   }
 

@@ -30,8 +30,7 @@ namespace PolyFrac
 
 
   template <int dim>
-  EnergyBalance<dim>::EnergyBalance(const Parameters           &prm,
-                                    const MeshGeometry<dim>    &geometry,
+  EnergyBalance<dim>::EnergyBalance(const MeshGeometry<dim>    &geometry,
                                     const FractureNetwork<dim> &network,
                                     const DoFMap<dim>          &dofs,
                                     const FractureEdges<dim>   &edges,
@@ -39,8 +38,7 @@ namespace PolyFrac
                                     const Flow<dim>            &flow,
                                     const BiotCoupling<dim>    &coupling,
                                     const Elasticity<dim>      &elasticity)
-    : prm(prm)
-    , geometry(geometry)
+    : geometry(geometry)
     , network(network)
     , dofs(dofs)
     , edges(edges)
@@ -152,7 +150,7 @@ namespace PolyFrac
     Vector<double> R(Au1);
     R -= load;
     R -= coupling.pressure_load(flow.cell_pressures(p_after),
-                                prm.flow.biot_coefficient,
+                                flow.parameters().biot_coefficient,
                                 flow.fracture_pressures(p_after));
     double contact_work = 0, friction_dissipation = 0, traction_work = 0;
     for (unsigned int i = 0; i < after.multipliers.size(); ++i)
@@ -207,7 +205,7 @@ namespace PolyFrac
   {
     const auto               &mesh = geometry.mesh;
     const double              dt   = data.time_step;
-    const double              invM = prm.flow.inverse_biot_modulus;
+    const double              invM = flow.parameters().inverse_biot_modulus;
     const Vector<double>      zero(p_after.size());
     const std::vector<double> h_m = flow.cell_sources(data.time);
     double storage_dissipation = 0, viscous = 0, stabilisation = 0;
@@ -266,8 +264,9 @@ namespace PolyFrac
             {
               const double jump =
                 p_after(pressure_dofs.face_dof(ff.face, cell)) - p_f;
-              exchange +=
-                dt * measure * prm.flow.normal_transmissibility * jump * jump;
+              exchange += dt * measure *
+                          flow.parameters().normal_transmissibility * jump *
+                          jump;
             }
         const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);
         for (unsigned int k = 0; k < fluxes.size(); ++k)
@@ -276,7 +275,7 @@ namespace PolyFrac
             const double       p_e = p_after(pressure_dofs.edge_dof(e));
             fracture_viscous += dt * fluxes[k] * (p_f - p_e);
             for (const types::boundary_id id : edges.edges[e].boundary_ids)
-              if (listed(prm.flow.pressure_ids, id))
+              if (listed(flow.parameters().pressure_ids, id))
                 {
                   boundary -= dt * fluxes[k] * p_e;
                   break;

@@ -86,12 +86,12 @@ namespace PolyFrac
     /** The exact jump [u] of the parameter file. */
     template <int dim>
     std::unique_ptr<FunctionParser<dim>>
-    exact_jump(const Parameters &prm)
+    exact_jump(const ExactFields &fields)
     {
       return make_expression<dim>("Exact solution/Displacement jump",
-                                  prm.exact.displacement_jump,
+                                  fields.expressions.displacement_jump,
                                   dim,
-                                  prm.constants);
+                                  fields.context.constants);
     }
 
     /**
@@ -102,19 +102,19 @@ namespace PolyFrac
      */
     template <int dim>
     std::unique_ptr<Function<dim>>
-    exact_field(const Parameters  &prm,
+    exact_field(const ExactFields &fields,
                 const bool         pressure,
                 const std::string &expression,
                 const double       time)
     {
       std::unique_ptr<Function<dim>> exact;
-      if (prm.exact.analytic_solution != AnalyticSolution::none)
+      if (fields.analytic)
         {
-          const auto solution = make_analytic_solution(prm);
           if (pressure)
-            exact = std::make_unique<AnalyticPressure<dim>>(solution);
+            exact = std::make_unique<AnalyticPressure<dim>>(fields.analytic);
           else
-            exact = std::make_unique<AnalyticDisplacement<dim>>(solution);
+            exact =
+              std::make_unique<AnalyticDisplacement<dim>>(fields.analytic);
         }
       else if (!expression.empty())
         exact =
@@ -122,7 +122,7 @@ namespace PolyFrac
                                           "Exact solution/Displacement",
                                expression,
                                pressure ? 1 : dim,
-                               prm.constants);
+                               fields.context.constants);
       if (exact)
         exact->set_time(time);
       return exact;
@@ -149,7 +149,7 @@ namespace PolyFrac
 
   template <int dim>
   Errors
-  compute_errors(const Parameters           &prm,
+  compute_errors(const ExactFields          &fields,
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
@@ -157,8 +157,8 @@ namespace PolyFrac
                  const double                time)
   {
     Errors errors;
-    if (const auto exact =
-          exact_field<dim>(prm, false, prm.exact.displacement, time))
+    if (const auto exact = exact_field<dim>(
+          fields, false, fields.expressions.displacement, time))
       {
         // Per cell: ∫|u − Π^K u_h|², ∫|u|², ∫|∇u − ∇^K u_h|², ∫|∇u|².
         using Sums = std::array<double, 4>;
@@ -166,7 +166,10 @@ namespace PolyFrac
         cell_loop<PerThreadFunction<dim>, Sums>(
           geometry.mesh.n_cells(),
           PerThreadFunction<dim>([&]() {
-            return exact_field<dim>(prm, false, prm.exact.displacement, time);
+            return exact_field<dim>(fields,
+                                    false,
+                                    fields.expressions.displacement,
+                                    time);
           }),
           [&](const unsigned int c, PerThreadFunction<dim> &own, Sums &sums) {
             sums.fill(0.);
@@ -204,9 +207,9 @@ namespace PolyFrac
         errors.u      = ratio(total[0], total[1]);
         errors.grad_u = ratio(total[2], total[3]);
       }
-    if (!prm.exact.displacement_jump.empty())
+    if (!fields.expressions.displacement_jump.empty())
       {
-        const auto exact = exact_jump<dim>(prm);
+        const auto exact = exact_jump<dim>(fields);
         exact->set_time(time);
         const auto sums = fracture_face_errors<dim>(
           *exact, geometry, network, dofs, [&](const unsigned int i) {
@@ -214,13 +217,13 @@ namespace PolyFrac
           });
         errors.jump = ratio(sums[0], sums[2]);
       }
-    if (!prm.exact.contact_traction.empty())
+    if (!fields.expressions.contact_traction.empty())
       {
         const auto exact =
           make_expression<dim>("Exact solution/Contact traction",
-                               prm.exact.contact_traction,
+                               fields.expressions.contact_traction,
                                dim,
-                               prm.constants);
+                               fields.context.constants);
         exact->set_time(time);
         // err_lambda_hm12 weighs each face by h_σ and divides by diam(Ω):
         // a computable surrogate of the H^{-1/2}(Γ) error.
@@ -241,7 +244,7 @@ namespace PolyFrac
 
   template <int dim>
   void
-  add_pressure_errors(const Parameters           &prm,
+  add_pressure_errors(const ExactFields          &fields,
                       const MeshGeometry<dim>    &geometry,
                       const FractureNetwork<dim> &network,
                       const Flow<dim>            &flow,
@@ -249,8 +252,8 @@ namespace PolyFrac
                       const double                time,
                       Errors                     &errors)
   {
-    if (const auto exact =
-          exact_field<dim>(prm, true, prm.exact.matrix_pressure, time))
+    if (const auto exact = exact_field<dim>(
+          fields, true, fields.expressions.matrix_pressure, time))
       {
         std::vector<Point<dim>> points;
         std::vector<double>     measures;
@@ -264,13 +267,13 @@ namespace PolyFrac
                                           measures,
                                           flow.cell_pressures(pressure));
       }
-    if (!prm.exact.fracture_pressure.empty())
+    if (!fields.expressions.fracture_pressure.empty())
       {
         const auto exact =
           make_expression<dim>("Exact solution/Fracture pressure",
-                               prm.exact.fracture_pressure,
+                               fields.expressions.fracture_pressure,
                                1,
-                               prm.constants);
+                               fields.context.constants);
         exact->set_time(time);
         std::vector<Point<dim>> points;
         std::vector<double>     measures;
@@ -288,7 +291,7 @@ namespace PolyFrac
 
   template <int dim>
   std::optional<MaximumOpening>
-  maximum_opening(const Parameters           &prm,
+  maximum_opening(const ExactFields          &fields,
                   const MeshGeometry<dim>    &geometry,
                   const FractureNetwork<dim> &network,
                   const DoFMap<dim>          &dofs,
@@ -304,9 +307,9 @@ namespace PolyFrac
             (!result || opening > result->value))
           result = MaximumOpening{opening, i, {}};
       }
-    if (result && !prm.exact.displacement_jump.empty())
+    if (result && !fields.expressions.displacement_jump.empty())
       {
-        const auto        exact = exact_jump<dim>(prm);
+        const auto        exact = exact_jump<dim>(fields);
         const Point<dim> &x =
           geometry.faces[network.fracture_faces[result->face].face].centroid;
         Tensor<1, dim> jump;
@@ -320,21 +323,21 @@ namespace PolyFrac
 
 
   template Errors
-  compute_errors(const Parameters &,
+  compute_errors(const ExactFields &,
                  const MeshGeometry<2> &,
                  const FractureNetwork<2> &,
                  const DoFMap<2> &,
                  const MechanicalState<2> &,
                  const double);
   template Errors
-  compute_errors(const Parameters &,
+  compute_errors(const ExactFields &,
                  const MeshGeometry<3> &,
                  const FractureNetwork<3> &,
                  const DoFMap<3> &,
                  const MechanicalState<3> &,
                  const double);
   template void
-  add_pressure_errors(const Parameters &,
+  add_pressure_errors(const ExactFields &,
                       const MeshGeometry<2> &,
                       const FractureNetwork<2> &,
                       const Flow<2> &,
@@ -342,7 +345,7 @@ namespace PolyFrac
                       const double,
                       Errors &);
   template void
-  add_pressure_errors(const Parameters &,
+  add_pressure_errors(const ExactFields &,
                       const MeshGeometry<3> &,
                       const FractureNetwork<3> &,
                       const Flow<3> &,
@@ -350,13 +353,13 @@ namespace PolyFrac
                       const double,
                       Errors &);
   template std::optional<MaximumOpening>
-  maximum_opening(const Parameters &,
+  maximum_opening(const ExactFields &,
                   const MeshGeometry<2> &,
                   const FractureNetwork<2> &,
                   const DoFMap<2> &,
                   const MechanicalState<2> &);
   template std::optional<MaximumOpening>
-  maximum_opening(const Parameters &,
+  maximum_opening(const ExactFields &,
                   const MeshGeometry<3> &,
                   const FractureNetwork<3> &,
                   const DoFMap<3> &,

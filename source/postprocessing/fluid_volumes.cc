@@ -61,13 +61,13 @@ namespace PolyFrac
 
 
   template <int dim>
-  FluidBalance<dim>::FluidBalance(const Parameters           &prm,
+  FluidBalance<dim>::FluidBalance(const ParameterContext     &context,
                                   const MeshGeometry<dim>    &geometry,
                                   const FractureNetwork<dim> &network,
                                   const FractureEdges<dim>   &edges,
                                   const PressureDoFMap<dim>  &pressure_dofs,
                                   const Flow<dim>            &flow)
-    : prm(prm)
+    : context(context)
     , geometry(geometry)
     , network(network)
     , edges(edges)
@@ -103,11 +103,12 @@ namespace PolyFrac
         const double measure = geometry.cells[c].measure;
         const auto   dof     = pressure_dofs.cell_dof(c);
         add_source(h_m[c], measure);
-        volumes.stored_in_matrix += measure * prm.flow.inverse_biot_modulus *
+        volumes.stored_in_matrix += measure *
+                                    flow.parameters().inverse_biot_modulus *
                                     (p_after(dof) - p_before(dof));
         if (!volume_after.empty())
-          volumes.stored_in_matrix +=
-            prm.flow.biot_coefficient * (volume_after[c] - volume_before[c]);
+          volumes.stored_in_matrix += flow.parameters().biot_coefficient *
+                                      (volume_after[c] - volume_before[c]);
         const auto darcy = flow.cell_fluxes(c, p_after);
         const auto increment =
           flow.increment_fluxes(c, data, p_before, p_after);
@@ -146,7 +147,7 @@ namespace PolyFrac
                   std::isfinite(volumes.stored_in_matrix) &&
                   std::isfinite(volumes.stored_in_fractures),
                 ExcMessage(
-                  "In <" + prm.file_name +
+                  "In <" + context.file_name +
                   ">: the step to t = " + std::to_string(data.time) +
                   " moves fluid volumes that are not finite numbers (" +
                   printed.str() +

@@ -5,15 +5,16 @@
 namespace PolyFrac
 {
   RateReference
-  rate_reference(const Parameters &prm)
+  rate_reference(const MeshParameters &mesh, const unsigned int dim)
   {
-    return {prm.mesh.refinement == MeshRefinement::adaptive ? prm.dim : 0};
+    return {mesh.refinement == MeshRefinement::adaptive ? dim : 0};
   }
 
 
 
   ConvergenceCheck
-  check_convergence(const Parameters                  &prm,
+  check_convergence(const ConvergenceStudyParameters  &convergence,
+                    const RateReference               &reference,
                     const std::vector<ConvergenceRow> &rows)
   {
     ConvergenceCheck check;
@@ -22,8 +23,8 @@ namespace PolyFrac
     };
     for (const auto &[name, column] : error_columns())
       {
-        if (const auto bound = prm.checks.maximum_errors.find(name);
-            bound != prm.checks.maximum_errors.end())
+        if (const auto bound = convergence.maximum_errors.find(name);
+            bound != convergence.maximum_errors.end())
           for (const ConvergenceRow &row : rows)
             {
               ++check.n_checked;
@@ -41,16 +42,16 @@ namespace PolyFrac
                   fail(sentence.str());
                 }
             }
-        if (const auto bound = prm.checks.minimum_rates.find(name);
-            bound != prm.checks.minimum_rates.end())
+        if (const auto bound = convergence.minimum_rates.find(name);
+            bound != convergence.minimum_rates.end())
           for (unsigned int r = 1; r < rows.size(); ++r)
             {
               ++check.n_checked;
               std::ostringstream sentence;
               sentence << "The rate of " << name << " between levels "
                        << rows[r - 1].level << " and " << rows[r].level;
-              const std::optional<double> rate = observed_rate(
-                rows[r - 1], rows[r], column, rate_reference(prm));
+              const std::optional<double> rate =
+                observed_rate(rows[r - 1], rows[r], column, reference);
               if (!rate)
                 fail(sentence.str() +
                      " cannot be computed (no exact field, a zero error or "

@@ -39,10 +39,19 @@ check(const std::string &name,
       AssertThrow(dim == 2, ExcInternalError());
       const LevelDiscretization<2> level(prm, 0);
       if (prm.model == "contact mechanics")
-        ContactMechanics<2>(prm, *level.geometry, *level.network, *level.dofs);
+        ContactMechanics<2>(prm.contact,
+                            prm.nonlinear,
+                            prm.mechanics,
+                            prm.solver,
+                            prm,
+                            *level.geometry,
+                            *level.network,
+                            *level.dofs);
       else
         {
-          Elasticity<2> elasticity(prm,
+          Elasticity<2> elasticity(prm.mechanics,
+                                   prm.solver,
+                                   prm,
                                    *level.geometry,
                                    *level.network,
                                    *level.dofs);

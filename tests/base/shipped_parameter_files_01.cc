@@ -5,7 +5,7 @@
 // solver and mesh; the test fails (exit status) if a file does not parse or
 // warns.
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 
 #include <algorithm>
 #include <filesystem>

@@ -98,7 +98,8 @@ check(const unsigned int subdivisions, const unsigned int n_states)
   const auto                    &dofs     = *level.dofs;
 
   // The saddle-point system of ContactMechanics, built from its pieces.
-  Elasticity<dim> elasticity(prm, geometry, network, dofs);
+  Elasticity<dim> elasticity(
+    prm.mechanics, prm.solver, prm, geometry, network, dofs);
   elasticity.make_constraints();
   std::map<types::global_dof_index, double> dirichlet;
   for (const auto &line : elasticity.get_constraints().get_lines())

@@ -55,8 +55,8 @@ namespace
   {
     const std::vector<Point<2>> centroids = {Point<2>(2, 0),
                                              Point<2>(0.5, 0.25)};
-    const auto                  law =
-      FrictionLaws::create(parameters(expected.settings), centroids);
+    const Parameters            prm       = parameters(expected.settings);
+    const auto law = FrictionLaws::create(prm.contact, prm, centroids);
     std::cout << law->name() << ":";
     AssertThrow(law->name() == expected.name, ExcInternalError());
     AssertThrow(law->is_free(true) == expected.free_in_contact,

@@ -82,36 +82,34 @@ main()
               << std::endl;
   }
 
-  expect_error("missing tag",
-               "no element of dimension 1 in physical group 11",
-               [] {
-                 Parameters prm = parameters(2, "gmsh_01.geo");
-                 prm.fractures.gmsh_physical_tags = {10, 11};
-                 Triangulation<2> tria;
-                 read_gmsh(prm, 0, MPI_COMM_SELF, tria);
-               });
-  expect_error("fracture tag not listed",
-               "list it in Fractures/Gmsh physical tags",
-               [] {
-                 Parameters prm = parameters(2, "gmsh_01.geo");
-                 prm.fractures.gmsh_physical_tags.clear();
-                 Triangulation<2> tria;
-                 read_gmsh(prm, 0, MPI_COMM_SELF, tria);
-               });
+  expect_error(
+    "missing tag", "no element of dimension 1 in physical group 11", [] {
+      Parameters prm                   = parameters(2, "gmsh_01.geo");
+      prm.fractures.gmsh_physical_tags = {10, 11};
+      Triangulation<2> tria;
+      read_gmsh(prm.mesh.file_name, prm.fractures.gmsh_physical_tags, 0, tria);
+    });
+  expect_error(
+    "fracture tag not listed", "list it in Fractures/Gmsh physical tags", [] {
+      Parameters prm = parameters(2, "gmsh_01.geo");
+      prm.fractures.gmsh_physical_tags.clear();
+      Triangulation<2> tria;
+      read_gmsh(prm.mesh.file_name, prm.fractures.gmsh_physical_tags, 0, tria);
+    });
   expect_error("not embedded", "Embed the fracture", [] {
     Parameters       prm = parameters(2, "gmsh_03_not_embedded.geo");
     Triangulation<2> tria;
-    read_gmsh(prm, 0, MPI_COMM_SELF, tria);
+    read_gmsh(prm.mesh.file_name, prm.fractures.gmsh_physical_tags, 0, tria);
   });
   expect_error("wrong dimension", "is 2-dimensional, but Dimension = 3", [] {
     Parameters       prm = parameters(3, "gmsh_01.geo");
     Triangulation<3> tria;
-    read_gmsh(prm, 0, MPI_COMM_SELF, tria);
+    read_gmsh(prm.mesh.file_name, prm.fractures.gmsh_physical_tags, 0, tria);
   });
   expect_error("missing file", "cannot be opened", [] {
     Parameters       prm = parameters(2, "no_such_mesh.msh");
     Triangulation<2> tria;
-    read_gmsh(prm, 0, MPI_COMM_SELF, tria);
+    read_gmsh(prm.mesh.file_name, prm.fractures.gmsh_physical_tags, 0, tria);
   });
   expect_error(
     "Segments with gmsh", "cannot be combined with Mesh/Source = gmsh", [] {

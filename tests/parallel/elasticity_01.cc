@@ -22,22 +22,22 @@ namespace
   Parameters
   scene(const std::string &method, const unsigned int cells_per_polytope)
   {
-    Parameters prm              = Testing::default_parameters(3, 8);
-    prm.model                   = "elasticity";
-    prm.mesh.cells_per_polytope = cells_per_polytope;
-    prm.fractures.geometries    = {{Point<3>(0, -1, -1),
-                                    Point<3>(0, -1, 1),
-                                    Point<3>(0, 1, 1),
-                                    Point<3>(0, 1, -1)}};
-    prm.fractures.traction      = "-1; z < 0 ? 1 - z^4 : 1; 0";
-    prm.body_force =
+    Parameters prm                  = Testing::default_parameters(3, 8);
+    prm.model                       = "elasticity";
+    prm.mesh.cells_per_polytope     = cells_per_polytope;
+    prm.fractures.geometries        = {{Point<3>(0, -1, -1),
+                                        Point<3>(0, -1, 1),
+                                        Point<3>(0, 1, 1),
+                                        Point<3>(0, 1, -1)}};
+    prm.mechanics.fracture_traction = "-1; z < 0 ? 1 - z^4 : 1; 0";
+    prm.mechanics.body_force =
       "0; (z < 0 ? 12*x*z^2 : 0) - (x > 0 && z > 0 ? 12*z^2 : 0); 0";
     const std::string exact =
       "-x/3; x*(z < 0 ? 1 - z^4 : 1) + (x > 0 && z > 0 ? z^4 : 0); 0";
-    prm.boundary.dirichlet_expression = exact;
-    prm.exact.displacement            = exact;
-    prm.exact.displacement_jump       = "0; z > 0 ? z^4 : 0; 0";
-    prm.solver.method                 = parse_selection<SolverMethod>(method);
+    prm.mechanics.boundary.dirichlet_expression = exact;
+    prm.exact.displacement                      = exact;
+    prm.exact.displacement_jump                 = "0; z > 0 ? z^4 : 0; 0";
+    prm.solver.method = parse_selection<SolverMethod>(method);
     return prm;
   }
 

@@ -67,21 +67,21 @@ namespace
           displacement +=
             (j == 0 ? "" : " + ") + std::to_string(A[i][j]) + "*" + x[j];
       }
-    prm.boundary.dirichlet_expression = displacement;
-    prm.body_force                    = dim == 2 ? "0; 0" : "0; 0; 0";
+    prm.mechanics.boundary.dirichlet_expression = displacement;
+    prm.mechanics.body_force                    = dim == 2 ? "0; 0" : "0; 0; 0";
     // The face x = 1 (boundary id 1) carries the traction σ e_x instead.
-    prm.boundary.neumann_ids = {1};
-    prm.boundary.neumann_traction.clear();
+    prm.mechanics.boundary.neumann_ids = {1};
+    prm.mechanics.boundary.neumann_traction.clear();
     for (unsigned int d = 0; d < dim; ++d)
-      prm.boundary.neumann_traction +=
+      prm.mechanics.boundary.neumann_traction +=
         (d == 0 ? "" : "; ") + std::to_string(sigma[d][0]);
     {
       const LevelDiscretization<dim> discretization(prm, 0);
       const Tensor<1, dim>           traction =
         -(sigma * discretization.network->normal(0));
-      prm.fractures.traction.clear();
+      prm.mechanics.fracture_traction.clear();
       for (unsigned int d = 0; d < dim; ++d)
-        prm.fractures.traction +=
+        prm.mechanics.fracture_traction +=
           (d == 0 ? "" : "; ") + std::to_string(traction[d]);
       const auto         model = make_model<dim>(prm, discretization);
       std::ostringstream log;
@@ -96,10 +96,10 @@ namespace
     }
 
     // Order 1 on a smooth solution without fractures.
-    prm.boundary.neumann_ids.clear();
+    prm.mechanics.boundary.neumann_ids.clear();
     prm.fractures.geometries.clear();
-    prm.fractures.traction = dim == 2 ? "0; 0" : "0; 0; 0";
-    prm.boundary.dirichlet_expression =
+    prm.mechanics.fracture_traction = dim == 2 ? "0; 0" : "0; 0; 0";
+    prm.mechanics.boundary.dirichlet_expression =
       dim == 2 ? "x^2 - y^2; -2*x*y" : "x^2 - y^2; -2*x*y; 0";
     const double eta_0 = global_indicator<dim>(prm, 0);
     const double eta_1 = global_indicator<dim>(prm, 1);

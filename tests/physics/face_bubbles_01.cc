@@ -37,20 +37,22 @@ namespace
                    const unsigned int subdivisions,
                    const bool         with_bubbles)
   {
-    Parameters prm             = Testing::default_parameters(dim, subdivisions);
-    prm.mesh.cell_type         = parse_selection<CellType>(cell_type);
-    prm.model                  = "elasticity";
-    prm.lame_mu                = 1;
-    prm.lame_lambda            = 0;
-    prm.boundary.dirichlet_ids = {2};
-    prm.boundary.neumann_ids   = {0, 1, 3};
-    prm.boundary.neumann_traction = dim == 2 ? "0; 0" : "0; 0; 0";
+    Parameters prm            = Testing::default_parameters(dim, subdivisions);
+    prm.mesh.cell_type        = parse_selection<CellType>(cell_type);
+    prm.model                 = "elasticity";
+    prm.mechanics.lame_mu     = 1;
+    prm.mechanics.lame_lambda = 0;
+    prm.mechanics.boundary.dirichlet_ids    = {2};
+    prm.mechanics.boundary.neumann_ids      = {0, 1, 3};
+    prm.mechanics.boundary.neumann_traction = dim == 2 ? "0; 0" : "0; 0; 0";
     if (dim == 3)
-      prm.boundary.neumann_ids.insert(prm.boundary.neumann_ids.end(), {4, 5});
+      prm.mechanics.boundary.neumann_ids.insert(
+        prm.mechanics.boundary.neumann_ids.end(), {4, 5});
     const LevelDiscretization<dim> discretization(prm, 0);
     const auto                    &geometry = *discretization.geometry;
     const auto                    &dofs     = *discretization.dofs;
-    Elasticity<dim> elasticity(prm, geometry, *discretization.network, dofs);
+    Elasticity<dim>                elasticity(
+      prm.mechanics, prm.solver, prm, geometry, *discretization.network, dofs);
     elasticity.make_constraints();
     const FaceBubbles<dim>  bubbles(geometry,
                                    *discretization.network,

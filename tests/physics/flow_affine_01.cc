@@ -59,7 +59,8 @@ check(const std::string                       &mesh_name,
   const auto                    &network  = *level.network;
   const FractureEdges<dim>       edges(geometry, network);
   const PressureDoFMap<dim>      dofs(*level.mesh, network, edges);
-  const Flow<dim>                flow(prm, geometry, network, edges, dofs);
+  const Flow<dim>                flow(
+    prm.flow, prm.solver, prm, geometry, network, edges, dofs);
   const auto p_m = make_expression<dim>("p_m", test.matrix_pressure, 1, {});
   const auto p_f = make_expression<dim>("p_f", test.fracture_pressure, 1, {});
 

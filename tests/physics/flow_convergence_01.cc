@@ -122,13 +122,20 @@ check(const std::string                       &family,
       const auto                    &network  = *discretization.network;
       const FractureEdges<dim>       edges(geometry, network);
       const PressureDoFMap<dim>      dofs(*discretization.mesh, network, edges);
-      const Flow<dim>                flow(prm, geometry, network, edges, dofs);
-      const FlowStepData             data     = flow.flow_step_data(0., 1.);
-      const Vector<double>           previous = flow.initial_pressure();
-      Vector<double>                 pressure;
+      const Flow<dim>                flow(
+        prm.flow, prm.solver, prm, geometry, network, edges, dofs);
+      const FlowStepData   data     = flow.flow_step_data(0., 1.);
+      const Vector<double> previous = flow.initial_pressure();
+      Vector<double>       pressure;
       flow.solve_step(data, previous, pressure);
       Errors errors;
-      add_pressure_errors(prm, geometry, network, flow, pressure, 0., errors);
+      add_pressure_errors({prm.exact, prm, nullptr},
+                          geometry,
+                          network,
+                          flow,
+                          pressure,
+                          0.,
+                          errors);
       AssertThrow(!errors.pressure->absolute &&
                     !errors.fracture_pressure->absolute,
                   ExcMessage("the exact pressures do not vanish"));

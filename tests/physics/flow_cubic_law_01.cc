@@ -44,7 +44,8 @@ check(const std::string &cell_type, const double aperture)
   const auto                    &network  = *level.network;
   const FractureEdges<dim>       edges(geometry, network);
   const PressureDoFMap<dim>      dofs(*level.mesh, network, edges);
-  const Flow<dim>                flow(prm, geometry, network, edges, dofs);
+  const Flow<dim>                flow(
+    prm.flow, prm.solver, prm, geometry, network, edges, dofs);
 
   const FlowStepData   data     = flow.flow_step_data(1., 1.);
   const Vector<double> previous = flow.initial_pressure();

@@ -21,13 +21,14 @@ main()
   prm.exact.analytic_load       = 6e8;
   prm.mesh.lower_left           = Point<3>(5, -2, 0);
   prm.mesh.upper_right          = Point<3>(105, 8, 0);
-  prm.lame_lambda               = 1.65e9;
-  prm.lame_mu                   = 2.475e9;
+  prm.mechanics.lame_lambda     = 1.65e9;
+  prm.mechanics.lame_mu         = 2.475e9;
   prm.flow.permeability         = "9.869e-14";
   prm.flow.viscosity            = 1e-3;
   prm.flow.biot_coefficient     = 1;
   prm.flow.inverse_biot_modulus = 1 / 1.65e10;
-  const auto          solution  = make_analytic_solution(prm);
+  const auto solution =
+    make_analytic_solution(prm.exact, prm.mechanics, prm.flow, prm.mesh, prm);
   const Mandel        reference({1.65e9, 2.475e9, 1, 1 / 1.65e10, 9.869e-11},
                          100,
                          10,
@@ -63,12 +64,13 @@ main()
   prm3.exact.analytic_load       = 6e8;
   prm3.mesh.lower_left           = Point<3>(0, 0, -1);
   prm3.mesh.upper_right          = Point<3>(1, 1, 2);
-  prm3.lame_lambda               = 1.65e9;
-  prm3.lame_mu                   = 1.475e9;
+  prm3.mechanics.lame_lambda     = 1.65e9;
+  prm3.mechanics.lame_mu         = 1.475e9;
   prm3.flow.permeability         = "1e-13";
   prm3.flow.biot_coefficient     = 1;
   prm3.flow.inverse_biot_modulus = 0;
-  const auto          terzaghi   = make_analytic_solution(prm3);
+  const auto terzaghi            = make_analytic_solution(
+    prm3.exact, prm3.mechanics, prm3.flow, prm3.mesh, prm3);
   const Terzaghi      reference3({1.65e9, 1.475e9, 1, 0, 1e-10}, 3, 6e8, -1, 2);
   AnalyticPressure<3> pressure3(terzaghi);
   AnalyticDisplacement<3> displacement3(terzaghi);
@@ -97,7 +99,8 @@ main()
   prm3.flow.permeability = "1e-13*(1 + z)";
   try
     {
-      make_analytic_solution(prm3);
+      make_analytic_solution(
+        prm3.exact, prm3.mechanics, prm3.flow, prm3.mesh, prm3);
       AssertThrow(false, ExcMessage("a varying permeability was accepted"));
     }
   catch (const ExceptionBase &e)
@@ -112,6 +115,8 @@ main()
                 << std::endl;
     }
   prm3.exact.analytic_solution = AnalyticSolution::none;
-  AssertThrow(make_analytic_solution(prm3) == nullptr,
+  AssertThrow(make_analytic_solution(
+                prm3.exact, prm3.mechanics, prm3.flow, prm3.mesh, prm3) ==
+                nullptr,
               ExcMessage("none gives no solution"));
 }

@@ -1,7 +1,7 @@
 #ifndef polyfrac_app_checkpoint_h
 #define polyfrac_app_checkpoint_h
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 
 #include <mpi.h>
 

@@ -3,7 +3,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 

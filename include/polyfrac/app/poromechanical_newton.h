@@ -10,7 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/app/level_discretization.h>
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/dofs/pressure_dof_map.h>

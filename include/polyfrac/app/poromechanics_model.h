@@ -338,6 +338,9 @@ namespace PolyFrac
     std::unique_ptr<BiotSystem<dim>>  system;
     /** Whether each step is one BiotSystem::step() (else fixed-stress). */
     bool monolithic = false;
+    /** The solution of Exact solution/Analytic solution, if one is set:
+     * the initial and boundary data and the exact fields of the errors. */
+    std::shared_ptr<const PoroelasticSolution> analytic;
     /** Contact mechanics, when the scene has fractures. */
     std::unique_ptr<ContactMechanics<dim>> contact;
     /** The monolithic Newton step, with fractures and the monolithic

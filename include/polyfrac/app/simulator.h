@@ -6,8 +6,8 @@
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/app/time_stepping.h>
-#include <polyfrac/base/parameters.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 
@@ -130,7 +130,7 @@ namespace PolyFrac
 
     /**
      * The parameters of @p discretization's level: #prm with the linear
-     * solver of its size (Parameters::SolverData::method_for()), kept in
+     * solver of its size (LinearSolverParameters::method_for()), kept in
      * #level_parameters for as long as the run.
      */
     const Parameters &

@@ -4,7 +4,7 @@
 #include <deal.II/base/discrete_time.h>
 
 #include <polyfrac/app/model.h>
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 
 #include <string>
 #include <vector>
@@ -141,7 +141,7 @@ namespace PolyFrac
     void
     plan_next_step();
 
-    const Parameters::TimeData &data;
+    const TimeParameters &data;
     /** The coupling iterations above which a step is not easy. */
     const unsigned int easy_coupling_iterations;
     /** The Newton iterations per coupling iteration above which a step is

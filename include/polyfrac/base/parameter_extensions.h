@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <polyfrac/base/parameter_context.h>
+
 #include <functional>
 #include <map>
 #include <string>
@@ -14,26 +16,12 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * What a check of a ParameterExtension knows of the scene besides its
-   * own entries.
-   */
-  struct ParameterContext
-  {
-    /** The parameter file, for the messages. */
-    std::string file_name;
-    /** The space dimension. */
-    unsigned int dim;
-    /** Expressions/Function constants. */
-    std::map<std::string, double> constants;
-  };
-
-  /**
    * Entries that a component adds to a subsection of the parameter file
    * from its own files (ASPECT's plugins, in deal.II idiom): the friction
-   * laws add theirs to the subsection Contact. Parameters declares them,
-   * checks them when it reads the file and warns about those the scene
-   * leaves unused, with the rest of the subsection and without knowing the
-   * component: base/ knows no physics.
+   * laws add theirs to the subsection Contact. The parameters of the
+   * subsection (ContactParameters) declare them, check them when they read
+   * the file and list those the choices leave unused, with the rest of the
+   * subsection and without knowing the plugin: base/ knows no physics.
    */
   struct ParameterExtension
   {

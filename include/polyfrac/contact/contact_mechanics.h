@@ -6,7 +6,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/solver_parameters.h>
+#include <polyfrac/contact/contact_parameters.h>
 #include <polyfrac/contact/face_condensation.h>
 #include <polyfrac/contact/friction_law.h>
 #include <polyfrac/contact/saddle_point.h>
@@ -118,15 +119,26 @@ namespace PolyFrac
   {
   public:
     /**
-     * The contact problem of @p prm (friction law, β, load steps, solver)
-     * on the mesh of @p geometry, the fracture faces of @p network and the
-     * unknowns of @p dofs (the multipliers after the displacement); all four
-     * must outlive this object.
+     * The contact problem of @p prm (friction law, β, load steps), solved
+     * by the Newton method of @p nonlinear and the linear solver of
+     * @p solver, for the momentum balance of @p mechanics on the mesh of
+     * @p geometry, the fracture faces of @p network and the unknowns of
+     * @p dofs (the multipliers after the displacement); @p context names the
+     * file in messages. All must outlive this object.
      */
-    ContactMechanics(const Parameters           &prm,
-                     const MeshGeometry<dim>    &geometry,
-                     const FractureNetwork<dim> &network,
-                     const DoFMap<dim>          &dofs);
+    ContactMechanics(const ContactParameters         &prm,
+                     const NonlinearSolverParameters &nonlinear,
+                     const MechanicsParameters       &mechanics,
+                     const LinearSolverParameters    &solver,
+                     const ParameterContext          &context,
+                     const MeshGeometry<dim>         &geometry,
+                     const FractureNetwork<dim>      &network,
+                     const DoFMap<dim>               &dofs);
+
+    /** Prints the counts and wall times of the condensed Newton steps so
+     * far (nothing if the steps are not condensed). */
+    void
+    print_condensation_times(std::ostream &out) const;
 
     /** Starts the first load step from the multipliers of @p coarse. */
     void
@@ -454,11 +466,14 @@ namespace PolyFrac
            Vector<double> &x,
            std::ostream   &out);
 
-    const Parameters           &prm;
-    const MeshGeometry<dim>    &geometry;
-    const FractureNetwork<dim> &network;
-    const DoFMap<dim>          &dofs;
-    Elasticity<dim>             elasticity;
+    const ContactParameters         &prm;
+    const NonlinearSolverParameters &nonlinear;
+    const LinearSolverParameters    &solver;
+    const ParameterContext          &context;
+    const MeshGeometry<dim>         &geometry;
+    const FractureNetwork<dim>      &network;
+    const DoFMap<dim>               &dofs;
+    Elasticity<dim>                  elasticity;
 
     /** The friction law of the fracture faces. */
     std::unique_ptr<FrictionLaw<dim>> friction;

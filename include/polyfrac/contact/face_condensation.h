@@ -11,7 +11,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/contact/saddle_point.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
@@ -91,7 +91,7 @@ namespace PolyFrac
                      const std::vector<BlockCoefficients>            &jumps,
                      const std::map<types::global_dof_index, double> &dirichlet,
                      const std::vector<Point<dim>>                   &vertices,
-                     const Parameters::SolverData                    &solver);
+                     const LinearSolverParameters                    &solver);
 
     /** How a condensed step was solved. */
     struct KrylovSolve
@@ -274,7 +274,7 @@ namespace PolyFrac
     krylov_solve(const FractureBandPreconditioner     *band_preconditioner,
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const Vector<double>                 &rhs,
-                 const Parameters::SolverData         &limits,
+                 const LinearSolverParameters         &limits,
                  const double                          enough,
                  Vector<double>                       &y);
 
@@ -351,7 +351,7 @@ namespace PolyFrac
     const std::vector<BlockCoefficients>            &jumps;
     const std::map<types::global_dof_index, double> &dirichlet;
     const std::vector<Point<dim>>                   &vertices;
-    const Parameters::SolverData                    &solver;
+    const LinearSolverParameters                    &solver;
 
     /**
      * The kinds of the local rows of every face (kinematic, jump variable,

@@ -5,7 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <polyfrac/base/parameter_extensions.h>
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/contact/contact_parameters.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 
@@ -167,16 +167,20 @@ namespace PolyFrac
     };
 
     /** The law that Contact/Friction law of @p prm chooses, for the
-     * fracture faces with the centroids @p centroids. */
+     * fracture faces with the centroids @p centroids; @p context gives the
+     * file named in messages and the constants of the expressions. */
     template <int dim>
     std::unique_ptr<FrictionLaw<dim>>
-    create(const Parameters &prm, const std::vector<Point<dim>> &centroids);
+    create(const ContactParameters       &prm,
+           const ParameterContext        &context,
+           const std::vector<Point<dim>> &centroids);
 
     /** The law that Contact/Friction law of @p prm chooses, for the
      * fracture faces of @p network. */
     template <int dim>
     std::unique_ptr<FrictionLaw<dim>>
-    create(const Parameters           &prm,
+    create(const ContactParameters    &prm,
+           const ParameterContext     &context,
            const MeshGeometry<dim>    &geometry,
            const FractureNetwork<dim> &network);
   } // namespace FrictionLaws

@@ -6,8 +6,8 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <polyfrac/base/parameters.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,12 +56,14 @@ namespace PolyFrac
   };
 
   /**
-   * Reads (or, for a `.geo`, meshes) `Mesh/File name` with the gmsh C++ API
-   * into @p tria and returns its fracture elements.
+   * Reads (or, for a `.geo`, meshes) @p file_name (Mesh/File name) with the
+   * gmsh C++ API into @p tria and returns its fracture elements, one
+   * fracture per tag of @p fracture_tags (Fractures/Gmsh physical tags).
    *
-   * Steps: `gmsh::open`; `generate(dim)` if the file is a `.geo`; the
-   * memory check of the refined mesh (check_memory(): its cells times
-   * 2^(dim n_refinements), for the ranks of @p communicator on this node);
+   * Steps: `gmsh::open`; `generate(dim)` if the file is a `.geo`;
+   * @p check_n_cells, if given, called with the number of cells of the
+   * refined mesh (its cells times 2^(dim n_refinements)): the memory check
+   * of the caller, which throws to refuse them;
    * @p n_refinements uniform gmsh refinements (`refine()`, which splits the
    * fracture elements together with the cells, so they stay conforming);
    * extraction:
@@ -92,18 +94,19 @@ namespace PolyFrac
    * @code
    *   Triangulation<2>     tria;
    *   const GmshMesh<2>    gmsh_mesh =
-   *     read_gmsh<2>(prm, prm.mesh.global_refinements + level,
-   *                  MPI_COMM_WORLD, tria);
+   *     read_gmsh<2>(prm.mesh.file_name, prm.fractures.gmsh_physical_tags,
+   *                  prm.mesh.global_refinements + level, tria);
    *   for (const auto &element : gmsh_mesh.fracture_elements)
    *     ... element.vertices, element.normal ...
    * @endcode
    */
   template <int dim>
   GmshMesh<dim>
-  read_gmsh(const Parameters   &prm,
-            const unsigned int  n_refinements,
-            const MPI_Comm      communicator,
-            Triangulation<dim> &tria);
+  read_gmsh(const std::string                 &file_name,
+            const std::vector<int>            &fracture_tags,
+            const unsigned int                 n_refinements,
+            Triangulation<dim>                &tria,
+            const std::function<void(double)> &check_n_cells = {});
 
   /**
    * The fracture elements of @p tria, a refinement by deal.II of the

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/dofs/dof_map.h>
 
 #include <utility>
@@ -73,7 +73,7 @@ namespace PolyFrac
                VectorType                           &x,
                const VectorType                     &rhs,
                const PreconditionerType             &preconditioner,
-               const Parameters::SolverData         &solver,
+               const LinearSolverParameters         &solver,
                const double                          enough = 0.);
 
   /**
@@ -101,7 +101,7 @@ namespace PolyFrac
                const VectorType                     &rhs,
                const DoFMap<dim>                    &dofs,
                const std::vector<Point<dim>>        &vertices,
-               const Parameters::SolverData         &solver);
+               const LinearSolverParameters         &solver);
 } // namespace PolyFrac
 
 #endif

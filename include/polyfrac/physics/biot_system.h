@@ -8,7 +8,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/parameter_context.h>
+#include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/physics/biot_coupling.h>
@@ -117,10 +118,9 @@ namespace PolyFrac
    * bubble's face).
    *
    * @code
-   *   BiotSystem<dim> system(prm, dofs, pressure_dofs, flow, coupling,
-   *                          elasticity, bubbles,
-   * BiotSystem<dim>::Unknowns::all); system.step(t_new, dt, state, pressure,
-   * new_state, new_pressure);
+   *   BiotSystem<dim> system(prm.solver, prm, dofs, pressure_dofs, flow,
+   * coupling, elasticity, bubbles, BiotSystem<dim>::Unknowns::all);
+   * system.step(t_new, dt, state, pressure, new_state, new_pressure);
    * @endcode
    */
   template <int dim>
@@ -137,15 +137,17 @@ namespace PolyFrac
       bubbles_and_pressures
     };
 
-    /** All arguments must outlive this object. */
-    BiotSystem(const Parameters          &prm,
-               const DoFMap<dim>         &dofs,
-               const PressureDoFMap<dim> &pressure_dofs,
-               const Flow<dim>           &flow,
-               const BiotCoupling<dim>   &coupling,
-               Elasticity<dim>           &elasticity,
-               const FaceBubbles<dim>    &bubbles,
-               const Unknowns             unknowns);
+    /** Solved by @p solver; @p context names the file in messages. All
+     * arguments must outlive this object. */
+    BiotSystem(const LinearSolverParameters &solver,
+               const ParameterContext       &context,
+               const DoFMap<dim>            &dofs,
+               const PressureDoFMap<dim>    &pressure_dofs,
+               const Flow<dim>              &flow,
+               const BiotCoupling<dim>      &coupling,
+               Elasticity<dim>              &elasticity,
+               const FaceBubbles<dim>       &bubbles,
+               const Unknowns                unknowns);
 
     /**
      * Unknowns::all: the step to @p time from (@p before, @p p_before),
@@ -249,14 +251,15 @@ namespace PolyFrac
                  const MechanicalState<dim> &before,
                  Vector<double>             &rhs) const;
 
-    const Parameters          &prm;
-    const DoFMap<dim>         &dofs;
-    const PressureDoFMap<dim> &pressure_dofs;
-    const Flow<dim>           &flow;
-    const BiotCoupling<dim>   &coupling;
-    Elasticity<dim>           &elasticity;
-    const FaceBubbles<dim>    &bubbles;
-    const Unknowns             unknowns;
+    const LinearSolverParameters &solver;
+    const ParameterContext       &context;
+    const DoFMap<dim>            &dofs;
+    const PressureDoFMap<dim>    &pressure_dofs;
+    const Flow<dim>              &flow;
+    const BiotCoupling<dim>      &coupling;
+    Elasticity<dim>              &elasticity;
+    const FaceBubbles<dim>       &bubbles;
+    const Unknowns                unknowns;
     /** Sizes of the blocks u (0 with bubbles_and_pressures), s and p. */
     const types::global_dof_index n_u, n_s, n_p;
     /** The prescribed unknowns of x and their values at the step. */

@@ -11,12 +11,14 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/parameter_context.h>
+#include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/physics/mechanical_state.h>
+#include <polyfrac/physics/mechanics_parameters.h>
 
 #include <functional>
 #include <memory>
@@ -51,14 +53,18 @@ namespace PolyFrac
   {
   public:
     /**
-     * The problem of @p prm (material, loads, boundary data) on the mesh of
-     * @p geometry with the fractures of @p network and the unknowns of
-     * @p dofs; all four must outlive this object. Parses the expressions.
+     * The problem of @p mechanics (material, loads, boundary data), solved
+     * by @p solver, on the mesh of @p geometry with the fractures of
+     * @p network and the unknowns of @p dofs; @p context gives the file
+     * named in messages and the constants of the expressions. All must
+     * outlive this object. Parses the expressions.
      */
-    Elasticity(const Parameters           &prm,
-               const MeshGeometry<dim>    &geometry,
-               const FractureNetwork<dim> &network,
-               const DoFMap<dim>          &dofs);
+    Elasticity(const MechanicsParameters    &mechanics,
+               const LinearSolverParameters &solver,
+               const ParameterContext       &context,
+               const MeshGeometry<dim>      &geometry,
+               const FractureNetwork<dim>   &network,
+               const DoFMap<dim>            &dofs);
 
     /** Dirichlet constraints, sparsity, matrix and right-hand side. */
     void
@@ -284,10 +290,12 @@ namespace PolyFrac
     assemble_face_loads(const AffineConstraints<double> &c,
                         Vector<double>                  &system_rhs) const;
 
-    const Parameters           &prm;
-    const MeshGeometry<dim>    &geometry;
-    const FractureNetwork<dim> &network;
-    const DoFMap<dim>          &dofs;
+    const MechanicsParameters    &mechanics;
+    const LinearSolverParameters &solver;
+    const ParameterContext       &context;
+    const MeshGeometry<dim>      &geometry;
+    const FractureNetwork<dim>   &network;
+    const DoFMap<dim>            &dofs;
 
     std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
       fracture_pressure, traction, initial_stress;

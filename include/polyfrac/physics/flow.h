@@ -9,11 +9,13 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/base/expressions.h>
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/parameter_context.h>
+#include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
+#include <polyfrac/physics/flow_parameters.h>
 
 #include <memory>
 #include <optional>
@@ -105,7 +107,8 @@ namespace PolyFrac
    * previous pressures to the new ones.
    *
    * @code
-   *   const Flow<dim> flow(prm, geometry, network, edges, pressure_dofs);
+   *   const Flow<dim> flow(prm.flow, prm.solver, prm, geometry, network,
+   *                        edges, pressure_dofs);
    *   Vector<double>  p = flow.initial_pressure();
    *   const Vector<double> previous = p;
    *   flow.solve_step(flow.flow_step_data(t, dt), previous, p);
@@ -115,15 +118,25 @@ namespace PolyFrac
   class Flow
   {
   public:
-    /** The flow of the scene @p prm on the mesh of @p geometry; all
-     * arguments must outlive it. Throws naming the entry if a Pressure or
-     * Flux boundary id is on no boundary face or the permeability is
-     * negative somewhere. */
-    Flow(const Parameters           &prm,
-         const MeshGeometry<dim>    &geometry,
-         const FractureNetwork<dim> &network,
-         const FractureEdges<dim>   &edges,
-         const PressureDoFMap<dim>  &dofs);
+    /** The flow of @p prm, solved by @p solver, on the mesh of
+     * @p geometry; @p context gives the file named in messages and the
+     * constants of the expressions. All arguments must outlive it. Throws
+     * naming the entry if a Pressure or Flux boundary id is on no boundary
+     * face or the permeability is negative somewhere. */
+    Flow(const FlowParameters         &prm,
+         const LinearSolverParameters &solver,
+         const ParameterContext       &context,
+         const MeshGeometry<dim>      &geometry,
+         const FractureNetwork<dim>   &network,
+         const FractureEdges<dim>     &edges,
+         const PressureDoFMap<dim>    &dofs);
+
+    /** The subsection Flow this flow was built from. */
+    const FlowParameters &
+    parameters() const
+    {
+      return prm;
+    }
 
     /** The step data of Model = flow at @p time with step @p time_step:
      * c_K = 1/M, a_σ = max(d_0, d_min) c_f, no extra sources, apertures
@@ -325,11 +338,13 @@ namespace PolyFrac
     bool
     active(const unsigned int c, const FlowStepData &data) const;
 
-    const Parameters           &prm;
-    const MeshGeometry<dim>    &geometry;
-    const FractureNetwork<dim> &network;
-    const FractureEdges<dim>   &edges;
-    const PressureDoFMap<dim>  &dofs;
+    const FlowParameters         &prm;
+    const LinearSolverParameters &solver;
+    const ParameterContext       &context;
+    const MeshGeometry<dim>      &geometry;
+    const FractureNetwork<dim>   &network;
+    const FractureEdges<dim>     &edges;
+    const PressureDoFMap<dim>    &dofs;
     /** K_m(x̄_K)/η per cell. */
     std::vector<double> cell_mobility;
     /** The HFV matrices of the cells, unit mobility. */

@@ -6,7 +6,11 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/parameter_context.h>
+#include <polyfrac/mesh/mesh_parameters.h>
+#include <polyfrac/physics/flow_parameters.h>
+#include <polyfrac/physics/mechanics_parameters.h>
+#include <polyfrac/postprocessing/exact_solution_parameters.h>
 
 #include <array>
 #include <memory>
@@ -273,25 +277,33 @@ namespace PolyFrac
    * corners and the centre of the Mesh box and must take one value there.
    */
   PoroelasticData
-  poroelastic_data(const Parameters &prm);
+  poroelastic_data(const MechanicsParameters &mechanics,
+                   const FlowParameters      &flow,
+                   const MeshParameters      &mesh,
+                   const ParameterContext    &context);
 
   /**
-   * The solution Exact solution/Analytic solution of @p prm, nullptr for
+   * The solution Exact solution/Analytic solution of @p exact, nullptr for
    * none, with the data of poroelastic_data() and the load Exact
    * solution/Analytic load, on the box of Mesh/Lower left and Upper right
-   * corner: Terzaghi's column along the last coordinate from the lower
-   * corner, Mandel's quarter with its symmetry axes through the lower
+   * corner of @p mesh: Terzaghi's column along the last coordinate from the
+   * lower corner, Mandel's quarter with its symmetry axes through the lower
    * corner (a = width, b = height).
    *
    * @code
-   *   const auto solution = make_analytic_solution(prm);
+   *   const auto solution = make_analytic_solution(
+   *     prm.exact, prm.mechanics, prm.flow, prm.mesh, prm);
    *   AnalyticPressure<dim>     pressure(solution);
    *   AnalyticDisplacement<dim> displacement(solution);
    *   displacement.set_time(t);   // Dirichlet data and exact u at t
    * @endcode
    */
   std::shared_ptr<const PoroelasticSolution>
-  make_analytic_solution(const Parameters &prm);
+  make_analytic_solution(const ExactSolutionParameters &exact,
+                         const MechanicsParameters     &mechanics,
+                         const FlowParameters          &flow,
+                         const MeshParameters          &mesh,
+                         const ParameterContext        &context);
 
   /**
    * The pressure of a PoroelasticSolution as a deal.II Function (one

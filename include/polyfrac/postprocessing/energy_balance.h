@@ -6,7 +6,6 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
 #include <polyfrac/contact/friction_law.h>
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
@@ -63,7 +62,7 @@ namespace PolyFrac
    * its own. Its bound is 10 × the coupling tolerance (§4).
    *
    * @code
-   *   const EnergyBalance<dim> balance(prm, geometry, network, dofs, edges,
+   *   const EnergyBalance<dim> balance(geometry, network, dofs, edges,
    *                                    pressure_dofs, flow, coupling,
    *                                    elasticity);
    *   elasticity.set_time(t_new);     // the load of step n
@@ -76,8 +75,7 @@ namespace PolyFrac
   {
   public:
     /** All arguments must outlive the object; assembles A once. */
-    EnergyBalance(const Parameters           &prm,
-                  const MeshGeometry<dim>    &geometry,
+    EnergyBalance(const MeshGeometry<dim>    &geometry,
                   const FractureNetwork<dim> &network,
                   const DoFMap<dim>          &dofs,
                   const FractureEdges<dim>   &edges,
@@ -134,7 +132,6 @@ namespace PolyFrac
     Tensor<1, dim>
     local_jump(const Vector<double> &v, const unsigned int i) const;
 
-    const Parameters           &prm;
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;
     const DoFMap<dim>          &dofs;

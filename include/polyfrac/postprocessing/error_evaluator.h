@@ -1,9 +1,11 @@
 #ifndef polyfrac_postprocessing_error_evaluator_h
 #define polyfrac_postprocessing_error_evaluator_h
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/parameter_context.h>
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
+#include <polyfrac/postprocessing/analytic_solutions.h>
+#include <polyfrac/postprocessing/exact_solution_parameters.h>
 
 #include <optional>
 #include <string>
@@ -65,13 +67,35 @@ namespace PolyFrac
   const std::vector<ErrorColumn> &
   error_columns();
 
-  /** The Errors of the mechanical @p state against the exact fields of
-   * @p prm at time @p time. On more than one rank (@p dofs), each rank
+  /**
+   * What the errors are measured against: the expressions of the subsection
+   * Exact solution, parsed with the constants of @p context, and the
+   * built-in solution of Exact solution/Analytic solution (nullptr for
+   * none), which gives the displacement and the matrix pressure.
+   *
+   * @code
+   *   const Errors errors =
+   *     compute_errors({prm.exact, prm, nullptr}, geometry, network, dofs,
+   *                    state);
+   * @endcode
+   */
+  struct ExactFields
+  {
+    /** The subsection Exact solution. */
+    const ExactSolutionParameters &expressions;
+    /** The file named in messages and the constants of the expressions. */
+    const ParameterContext &context;
+    /** The built-in poroelastic solution, or nullptr. */
+    std::shared_ptr<const PoroelasticSolution> analytic;
+  };
+
+  /** The Errors of the mechanical @p state against the exact fields
+   * @p fields at time @p time. On more than one rank (@p dofs), each rank
    * integrates over its own polytopes and fracture faces, and every rank
    * gets the errors of the whole mesh (MPI sums). */
   template <int dim>
   Errors
-  compute_errors(const Parameters           &prm,
+  compute_errors(const ExactFields          &fields,
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const DoFMap<dim>          &dofs,
@@ -81,12 +105,12 @@ namespace PolyFrac
   /**
    * Sets err_pressure and err_fracture_pressure of @p errors (doc/scheme.md
    * §8) for the pressures @p pressure of @p flow at time @p time, against
-   * Exact solution/Matrix pressure and Fracture pressure of @p prm (each
-   * when given).
+   * the exact matrix pressure (Exact solution/Matrix pressure or the
+   * analytic one) and Fracture pressure of @p fields (each when given).
    */
   template <int dim>
   void
-  add_pressure_errors(const Parameters           &prm,
+  add_pressure_errors(const ExactFields          &fields,
                       const MeshGeometry<dim>    &geometry,
                       const FractureNetwork<dim> &network,
                       const Flow<dim>            &flow,
@@ -113,7 +137,7 @@ namespace PolyFrac
   /** The MaximumOpening, or nothing when no face is open. */
   template <int dim>
   std::optional<MaximumOpening>
-  maximum_opening(const Parameters           &prm,
+  maximum_opening(const ExactFields          &fields,
                   const MeshGeometry<dim>    &geometry,
                   const FractureNetwork<dim> &network,
                   const DoFMap<dim>          &dofs,

@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/base/parameter_context.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/fractures/fracture_network.h>
@@ -98,7 +98,7 @@ namespace PolyFrac
   {
   public:
     /** All arguments must outlive the object. */
-    FluidBalance(const Parameters           &prm,
+    FluidBalance(const ParameterContext     &context,
                  const MeshGeometry<dim>    &geometry,
                  const FractureNetwork<dim> &network,
                  const FractureEdges<dim>   &edges,
@@ -122,7 +122,7 @@ namespace PolyFrac
          const std::vector<double> &apertures_before) const;
 
   private:
-    const Parameters           &prm;
+    const ParameterContext     &context;
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;
     const FractureEdges<dim>   &edges;

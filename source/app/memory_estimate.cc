@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/tensor.h>
 
-#include <polyfrac/base/memory_estimate.h>
+#include <polyfrac/app/memory_estimate.h>
 
 #include <unistd.h>
 
@@ -58,14 +58,15 @@ namespace PolyFrac
     // An adaptive cycle refines the Refined fraction of the cells (and a
     // few more, to keep one hanging node per face) into 2^dim children: a
     // lower bound.
-    const bool   adaptive    = prm.mesh.refinement == MeshRefinement::adaptive;
-    const double refinements = prm.mesh.global_refinements +
-                               (adaptive ? 0 : prm.n_refinement_levels - 1);
+    const bool   adaptive = prm.mesh.refinement == MeshRefinement::adaptive;
+    const double refinements =
+      prm.mesh.global_refinements +
+      (adaptive ? 0 : prm.convergence.n_refinement_levels - 1);
     double n_cells = std::pow(2., dim * refinements);
     if (adaptive)
       n_cells *=
         std::pow(1 + prm.mesh.refined_fraction * (std::pow(2., dim) - 1),
-                 prm.n_refinement_levels - 1.);
+                 prm.convergence.n_refinement_levels - 1.);
     for (unsigned int d = 0; d < dim; ++d)
       n_cells *= prm.mesh.subdivisions[d];
     if (prm.mesh.cell_type == CellType::simplex)

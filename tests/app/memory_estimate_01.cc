@@ -5,7 +5,7 @@
 // rank is refused for the ranks that would not fit beside each other, and
 // the message says so. The default linear solver is chosen by the size.
 
-#include <polyfrac/base/memory_estimate.h>
+#include <polyfrac/app/memory_estimate.h>
 
 #include <cmath>
 #include <iostream>

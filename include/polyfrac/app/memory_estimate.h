@@ -1,7 +1,7 @@
-#ifndef polyfrac_base_memory_estimate_h
-#define polyfrac_base_memory_estimate_h
+#ifndef polyfrac_app_memory_estimate_h
+#define polyfrac_app_memory_estimate_h
 
-#include <polyfrac/base/parameters.h>
+#include <polyfrac/app/parameters.h>
 
 namespace PolyFrac
 {

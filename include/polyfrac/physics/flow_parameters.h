@@ -1,0 +1,77 @@
+#ifndef polyfrac_physics_flow_parameters_h
+#define polyfrac_physics_flow_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <polyfrac/base/parameter_context.h>
+
+#include <string>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The subsection Flow (doc/scheme.md §1, §7): Darcy flow in the matrix,
+   * Poiseuille flow (cubic law) in the fractures, exchange through a normal
+   * transmissibility, the Biot data. Expressions are in x, y (, z) and t.
+   */
+  struct FlowParameters
+  {
+    /** Declares the subsection Flow. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Reads and checks the subsection Flow; throws naming the file and
+     * the entry. */
+    void
+    parse_parameters(ParameterHandler &prm, const ParameterContext &context);
+
+    /** Permeability K_m ≥ 0 of the matrix (isotropic), an expression. */
+    std::string permeability;
+    /** Viscosity η > 0 of the fluid. */
+    double viscosity;
+    /** Biot coefficient b in [0, 1] (poromechanics). */
+    double biot_coefficient;
+    /** Inverse Biot modulus 1/M ≥ 0: the storage of Model = flow. */
+    double inverse_biot_modulus;
+    /** Initial porosity φ^0 in [0, 1) (poromechanics). */
+    double initial_porosity;
+    /** Initial pressure p^0 of matrix and fractures, an expression. */
+    std::string initial_pressure;
+    /** Fracture aperture at contact d_0 ≥ 0: d_f = d_0 − [u]_n. */
+    double aperture_at_contact;
+    /** Minimum fracture aperture > 0: the floor of d_f in the cubic law. */
+    double minimum_aperture;
+    /** Whether poromechanics enriches the displacement with the normal
+     * face bubbles that make the pair with cell pressures stable
+     * (FaceBubbles). */
+    bool face_bubbles;
+    /** Pressure stabilisation δ ≥ 0 of the pair without face bubbles: the
+     * mobility δ b² h_K²/((λ+2μ) Δt) of the pressure increment (0: none). */
+    double pressure_stabilisation;
+    /** Fracture compressibility c_f ≥ 0 (1/Pa): the fracture mass
+     * balance stores max(d_f, d_min) c_f ∂_t p_f. */
+    double fracture_compressibility;
+    /** Fracture normal transmissibility Λ_f ≥ 0. */
+    double normal_transmissibility;
+    /** Matrix source h_m, an expression. */
+    std::string matrix_source;
+    /** Fracture source h_f, an expression. */
+    std::string fracture_source;
+    /** Pressure boundary ids (matrix faces and fracture edges). */
+    std::vector<unsigned int> pressure_ids;
+    /** Pressure boundary expression. */
+    std::string pressure_expression;
+    /** Flux boundary ids. */
+    std::vector<unsigned int> flux_ids;
+    /** Flux boundary expression: outward volume flux per area. */
+    std::string flux_expression;
+    /** HFV stabilisation α > 0, or 0 for auto (√d in the matrix,
+     * √(d−1) in the fractures). */
+    double stabilisation;
+  };
+} // namespace PolyFrac
+
+#endif

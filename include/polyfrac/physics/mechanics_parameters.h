@@ -1,0 +1,87 @@
+#ifndef polyfrac_physics_mechanics_parameters_h
+#define polyfrac_physics_mechanics_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <polyfrac/base/parameter_context.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace PolyFrac
+{
+  using namespace dealii;
+
+  /**
+   * The data of the momentum balance: the subsections Material, Body force,
+   * Boundary conditions and Initial stress, and the loads on the fractures
+   * (Fractures/Pressure and Traction; the geometry of the subsection
+   * Fractures is FractureParameters').
+   */
+  struct MechanicsParameters
+  {
+    /** Declares these entries for dimension @p dim. */
+    static void
+    declare_parameters(ParameterHandler &prm, const unsigned int dim);
+
+    /** Reads and checks them: admissible Lamé coefficients, disjoint
+     * boundary ids, expressions with dim (dim × dim) components. */
+    void
+    parse_parameters(ParameterHandler &prm, const ParameterContext &context);
+
+    /** Material/Lame lambda: the Lamé coefficient λ. */
+    double lame_lambda;
+    /** Material/Lame mu: the shear modulus μ > 0. */
+    double lame_mu;
+
+    /** Body force/Function expression: f, a vector expression. */
+    std::string body_force;
+
+    /** Boundary conditions. */
+    struct BoundaryConditions
+    {
+      /** Dirichlet expression: g_D, a vector expression. */
+      std::string dirichlet_expression;
+      /** Dirichlet boundary ids (empty: every id that is not Neumann). */
+      std::vector<unsigned> dirichlet_ids;
+      /** Neumann boundary ids. */
+      std::vector<unsigned> neumann_ids;
+      /** Neumann traction: g_N, a vector expression. */
+      std::string neumann_traction;
+      /**
+       * Dirichlet components ("0: x; 2: y" are rollers): for each listed
+       * Dirichlet boundary id, which components (x, y, z) are fixed; the
+       * others are free and traction-free. An id not listed fixes all.
+       */
+      std::map<unsigned int, std::vector<bool>> dirichlet_components;
+    } boundary; /**< The subsection Boundary conditions. */
+
+    /** Fractures/Pressure: the fracture pressure p_f, a load of Model =
+     * elasticity and contact mechanics (a scalar expression). */
+    std::string fracture_pressure;
+    /** Fractures/Traction: a traction t on the fracture faces in global
+     * components (a vector expression): the multiplier λ = −T^+ of Model =
+     * elasticity, a change of the fault traction under contact. */
+    std::string fracture_traction;
+
+    /** Initial stress/Stress: the in-situ effective stress σ0, dim × dim
+     * expressions row by row (';'-separated), or 0. The momentum balance
+     * gains −Σ_K |K| σ0(x̄_K):ε_K(v) on its right-hand side. */
+    std::string initial_stress;
+
+  private:
+    /** Throws unless mu > 0 and lambda > -2 mu/dim. */
+    void
+    check_lame_coefficients(const ParameterContext &context) const;
+
+    /** Reads Boundary conditions/Dirichlet components; throws naming the
+     * entry on a malformed item, an unknown component or an id that is
+     * not a Dirichlet id. */
+    void
+    read_dirichlet_components(const std::string      &text,
+                              const ParameterContext &context);
+  };
+} // namespace PolyFrac
+
+#endif

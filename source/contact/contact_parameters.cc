@@ -1,0 +1,125 @@
+#include <polyfrac/base/parameter_extensions.h>
+#include <polyfrac/contact/contact_parameters.h>
+
+namespace PolyFrac
+{
+  namespace
+  {
+    /** The extensions of the subsection Contact (the friction laws). */
+    const std::vector<ParameterExtension> &
+    extensions()
+    {
+      static const std::vector<ParameterExtension> none;
+      const auto                                  &all = parameter_extensions();
+      const auto                                   found = all.find("Contact");
+      return found == all.end() ? none : found->second;
+    }
+  } // namespace
+
+
+
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Bubbles",
+                      "true",
+                      Patterns::Bool(),
+                      "false: no bubble unknowns (they are fixed to zero), for "
+                      "the stability study.");
+    prm.declare_entry(
+      "Bubble placement",
+      "plus side",
+      Patterns::Selection("plus side|split"),
+      "plus side: the bubble of each fracture face enters the trace of its "
+      "+ cell (the paper's scheme), so that lambda balances the traction "
+      "of that cell alone. split: half of it enters the + cell's trace and "
+      "minus half the - cell's; the jump is the same, but lambda balances "
+      "the mean traction of both sides, where the stress that is odd "
+      "across the fracture cancels: near a shear crack's tip, the + side "
+      "alone makes lambda_n oscillate and the tip face open "
+      "(benchmarks/B1.md, 'The tip').");
+    prm.declare_entry("Complementarity parameter",
+                      "auto",
+                      Patterns::Anything(),
+                      "beta > 0 of the complementarity functions, or auto: "
+                      "(2 mu + lambda)/h_sigma on each fracture face.");
+    prm.declare_entry(
+      "Number of load steps",
+      "1",
+      Patterns::Integer(1),
+      "Step k scales body force, initial stress, Dirichlet and Neumann "
+      "data, p_f and the fracture traction by k/N (not the friction "
+      "data). A continuation for Tresca and frictionless; quasi-static "
+      "steps for Coulomb. 1 with Quasi-static time steps (the time steps "
+      "are the load steps).");
+    prm.declare_entry(
+      "Quasi-static time steps",
+      "false",
+      Patterns::Bool(),
+      "true: Model = contact mechanics steps from t = 0 to Time/End time "
+      "(Time/Time step, Adaptive, Output times, Checkpoint interval), each "
+      "step in equilibrium with the loads at its time (expressions in t), "
+      "the slip history carried from step to step (Coulomb, slip "
+      "weakening). A step without equilibrium is cut; where equilibrium "
+      "ends on slip-weakening faces the run stops there with a "
+      "'quasi-static instability' report. false: one static solve.");
+    for (const ParameterExtension &extension : extensions())
+      extension.declare(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler       &prm,
+                                      const ParameterContext &context)
+  {
+    prm.enter_subsection("Contact");
+    const std::string where = context.where("Contact");
+    bubbles                 = prm.get_bool("Bubbles");
+    split_bubbles           = prm.get("Bubble placement") == "split";
+    beta = ParameterParsing::auto_or_number(prm, "Complementarity parameter");
+    AssertThrow(beta >= 0,
+                ExcMessage(where +
+                           ": <Complementarity parameter> must be auto or a "
+                           "positive number, not <" +
+                           prm.get("Complementarity parameter") + ">."));
+    n_load_steps       = prm.get_integer("Number of load steps");
+    quasi_static_steps = prm.get_bool("Quasi-static time steps");
+    friction_law       = std::make_shared<ParameterHandler>();
+    for (const ParameterExtension &extension : extensions())
+      {
+        extension.check(prm, context);
+        extension.declare(*friction_law);
+        for (const std::string &entry : extension.entries())
+          friction_law->set(entry, prm.get(entry));
+      }
+    prm.leave_subsection();
+  }
+
+
+
+  std::vector<std::string>
+  ContactParameters::friction_law_entries()
+  {
+    std::vector<std::string> entries;
+    for (const ParameterExtension &extension : extensions())
+      for (const std::string &entry : extension.entries())
+        entries.push_back("Contact/" + entry);
+    return entries;
+  }
+
+
+
+  std::vector<UnusedEntry>
+  ContactParameters::unused_entries() const
+  {
+    std::vector<UnusedEntry> unused;
+    for (const ParameterExtension &extension : extensions())
+      for (const auto &[entry, choice] :
+           extension.unused_entries(*friction_law))
+        unused.emplace_back("Contact/" + entry, choice);
+    return unused;
+  }
+} // namespace PolyFrac

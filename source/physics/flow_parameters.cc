@@ -1,0 +1,243 @@
+#include <polyfrac/physics/flow_parameters.h>
+
+#include <cmath>
+#include <limits>
+
+namespace PolyFrac
+{
+  void
+  FlowParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Flow");
+    prm.declare_entry("Permeability",
+                      "1e-15",
+                      Patterns::Anything(),
+                      "Matrix permeability K_m >= 0 (isotropic, m^2), an "
+                      "expression in x, y (, z) evaluated at the cell "
+                      "centroids. 0 everywhere with Inverse Biot modulus = 0: "
+                      "the matrix is not solved for (fracture flow alone).");
+    prm.declare_entry("Viscosity",
+                      "1e-3",
+                      Patterns::Double(),
+                      "Fluid viscosity eta > 0 (Pa s).");
+    prm.declare_entry("Biot coefficient",
+                      "0.5",
+                      Patterns::Double(),
+                      "Biot coefficient b in [0, 1] (poromechanics).");
+    prm.declare_entry("Inverse Biot modulus",
+                      "1e-10",
+                      Patterns::Double(),
+                      "1/M >= 0 (1/Pa); 0: incompressible fluid and grains. "
+                      "The matrix storage coefficient of Model = flow.");
+    prm.declare_entry("Initial porosity",
+                      "0.1",
+                      Patterns::Double(),
+                      "Initial porosity phi^0 in [0, 1) (poromechanics).");
+    prm.declare_entry("Initial pressure",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial pressure of matrix and fractures, an expression "
+                      "in x, y (, z).");
+    prm.declare_entry("Fracture aperture at contact",
+                      "1e-4",
+                      Patterns::Double(),
+                      "d_0 >= 0 (m): the hydraulic aperture of a closed "
+                      "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n).");
+    prm.declare_entry("Minimum fracture aperture",
+                      "1e-5",
+                      Patterns::Double(),
+                      "Floor > 0 (m) of d_f in the cubic law C_f = d_f^3/12, "
+                      "so that a closed fracture still conducts.");
+    prm.declare_entry(
+      "Face bubbles",
+      "true",
+      Patterns::Bool(),
+      "Model = poromechanics: one normal bubble per interior face enriches the "
+      "nodal displacement, which makes it an inf-sup stable pair with the cell "
+      "pressures (doc/scheme.md §10): no pressure oscillations in the "
+      "undrained limit and nothing added to the physics. false: the nodal "
+      "pair alone (unstable at small time steps; needed on several ranks, "
+      "where the bubbles are not yet available).");
+    prm.declare_entry("Pressure stabilisation",
+                      "0",
+                      Patterns::Double(),
+                      "delta >= 0 (poromechanics with Face bubbles = false): "
+                      "the pressure increment diffuses with the extra mobility "
+                      "s_K = delta b^2 h_K^2/((lambda + 2 mu) dt) (Rodrigo, "
+                      "Gaspar, Hu, Zikatanov 2016: delta = 1/4), which damps "
+                      "the oscillations of the nodal pair but changes the "
+                      "answers (tight rock: it dominates the permeability); "
+                      "0: none.");
+    prm.declare_entry(
+      "Fracture compressibility",
+      "4.5e-10",
+      Patterns::Double(),
+      "c_f >= 0 (1/Pa): the fluid in a fracture face of aperture d_f stores "
+      "max(d_f, d_min) c_f per unit pressure and area, so that the fracture "
+      "mass balance gains max(d_f, d_min) c_f dp_f/dt (default: water); a "
+      "closed fracture in an impermeable matrix is then well posed. 0: "
+      "incompressible.");
+    prm.declare_entry("Fracture normal transmissibility",
+                      "1e-9",
+                      Patterns::Double(),
+                      "Lambda_f >= 0 (m/(Pa s)): the exchange flux from a "
+                      "matrix side into the fracture is Lambda_f (p_m trace - "
+                      "p_f).");
+    prm.declare_entry("Matrix source",
+                      "0",
+                      Patterns::Anything(),
+                      "h_m: volume per volume per second, an expression in x, "
+                      "y (, z), t.");
+    prm.declare_entry("Fracture source",
+                      "0",
+                      Patterns::Anything(),
+                      "h_f: volume per fracture area per second, an expression "
+                      "in x, y (, z), t.");
+    prm.declare_entry("Pressure boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids with a prescribed pressure; fracture edges "
+                      "on these boundaries take the same pressure.");
+    prm.declare_entry("Pressure boundary expression",
+                      "0",
+                      Patterns::Anything(),
+                      "Pressure on the Pressure boundary ids, an expression in "
+                      "x, y (, z), t.");
+    prm.declare_entry("Flux boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids with a prescribed outward flux; every "
+                      "other boundary face and fracture edge is no-flow.");
+    prm.declare_entry("Flux boundary expression",
+                      "0",
+                      Patterns::Anything(),
+                      "Outward volume flux per area on the Flux boundary ids, "
+                      "an expression in x, y (, z), t.");
+    prm.declare_entry("HFV stabilisation",
+                      "auto",
+                      Patterns::Anything(),
+                      "alpha in [1e-6, 1e6] of the hybrid finite volume "
+                      "stabilisation, "
+                      "or auto: sqrt(d) in the matrix and sqrt(d-1) in the "
+                      "fractures (Eymard, Gallouet, Herbin 2010). Affine "
+                      "pressures are exact for every alpha.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  FlowParameters::parse_parameters(ParameterHandler       &prm,
+                                   const ParameterContext &context)
+  {
+    prm.enter_subsection("Flow");
+    const std::string where   = context.where("Flow") + ": ";
+    const auto        bounded = [&](const std::string &entry,
+                             const double       lower,
+                             const double       upper,
+                             const bool         strict_lower,
+                             const std::string &range) {
+      return ParameterParsing::bounded_double(
+        prm, where, entry, lower, !strict_lower, upper, true, range);
+    };
+    const double infinity = std::numeric_limits<double>::max();
+    permeability          = context.checked_expression("Flow/Permeability",
+                                              prm.get("Permeability"),
+                                              1);
+    AssertThrow(!ParameterParsing::uses_time(permeability),
+                ExcMessage(where + "<Permeability> = " + permeability +
+                           " depends on t, but the permeability is evaluated "
+                           "once, at t = 0 (the flow operators are assembled "
+                           "once per level): give it in x, y (, z) only."));
+    viscosity        = bounded("Viscosity", 0, infinity, true, "> 0 (Pa s)");
+    biot_coefficient = bounded("Biot coefficient", 0, 1, false, "in [0, 1]");
+    inverse_biot_modulus =
+      bounded("Inverse Biot modulus", 0, infinity, false, ">= 0 (1/Pa)");
+    initial_porosity = bounded(
+      "Initial porosity", 0, std::nextafter(1., 0.), false, "in [0, 1)");
+    initial_pressure = context.checked_expression("Flow/Initial pressure",
+                                                  prm.get("Initial pressure"),
+                                                  1);
+    aperture_at_contact =
+      bounded("Fracture aperture at contact", 0, infinity, false, ">= 0 (m)");
+    minimum_aperture =
+      bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
+    for (const std::string entry :
+         {"Minimum fracture aperture", "Fracture aperture at contact"})
+      {
+        // The cubic law's conductivity d³/(12 η) of the aperture must be a
+        // positive double, or the fracture flow is singular or infinite.
+        const double d = prm.get_double(entry);
+        const double conductivity =
+          std::pow(std::max(d, minimum_aperture), 3) / (12 * viscosity);
+        AssertThrow(std::isnormal(conductivity) && conductivity > 0,
+                    ExcMessage(where + "<" + entry + "> = " + prm.get(entry) +
+                               " with <Viscosity> = " + prm.get("Viscosity") +
+                               " gives the cubic-law conductivity d^3/(12 "
+                               "viscosity) = " +
+                               Utilities::to_string(conductivity) +
+                               ", which is not a positive double (or a "
+                               "denormal one, without digits): give "
+                               "the apertures in m (about 1e-6 to 1e-2) and "
+                               "the viscosity in Pa s (1e-3 for water)."));
+      }
+    face_bubbles = prm.get_bool("Face bubbles");
+    pressure_stabilisation =
+      bounded("Pressure stabilisation", 0, infinity, false, ">= 0");
+    AssertThrow(!face_bubbles || pressure_stabilisation == 0,
+                ExcMessage("In <" + context.file_name +
+                           ">: Flow/Pressure stabilisation = " +
+                           prm.get("Pressure stabilisation") +
+                           " with Flow/Face bubbles = true: the face bubbles "
+                           "make the pair stable, and the stabilisation would "
+                           "only change the answers. Set it to 0, or set "
+                           "Face bubbles = false."));
+    fracture_compressibility =
+      bounded("Fracture compressibility", 0, infinity, false, ">= 0 (1/Pa)");
+    normal_transmissibility = bounded("Fracture normal transmissibility",
+                                      0,
+                                      infinity,
+                                      false,
+                                      ">= 0 (m/(Pa s))");
+    matrix_source           = context.checked_expression("Flow/Matrix source",
+                                               prm.get("Matrix source"),
+                                               1);
+    fracture_source         = context.checked_expression("Flow/Fracture source",
+                                                 prm.get("Fracture source"),
+                                                 1);
+    const std::string fwhere = context.where("Flow");
+    pressure_ids =
+      ParameterParsing::read_ids<unsigned int>(prm.get("Pressure boundary ids"),
+                                               "Pressure boundary ids",
+                                               fwhere);
+    flux_ids =
+      ParameterParsing::read_ids<unsigned int>(prm.get("Flux boundary ids"),
+                                               "Flux boundary ids",
+                                               fwhere);
+    ParameterParsing::check_disjoint(pressure_ids,
+                                     "Pressure boundary ids",
+                                     flux_ids,
+                                     "Flux boundary ids",
+                                     fwhere);
+    pressure_expression =
+      context.checked_expression("Flow/Pressure boundary expression",
+                                 prm.get("Pressure boundary expression"),
+                                 1);
+    flux_expression =
+      context.checked_expression("Flow/Flux boundary expression",
+                                 prm.get("Flux boundary expression"),
+                                 1);
+    // Any α > 0 gives a consistent scheme, but the flow matrix's condition
+    // number grows like max(α, 1/α).
+    stabilisation = ParameterParsing::auto_or_number(prm, "HFV stabilisation");
+    AssertThrow(stabilisation == 0 ||
+                  (stabilisation >= 1e-6 && stabilisation <= 1e6),
+                ExcMessage(where +
+                           "<HFV stabilisation> must be auto or a number in "
+                           "[1e-6, 1e6] (the flow matrix's condition number "
+                           "grows like max(alpha, 1/alpha)), not <" +
+                           Utilities::trim(prm.get("HFV stabilisation")) +
+                           ">."));
+    prm.leave_subsection();
+  }
+} // namespace PolyFrac
