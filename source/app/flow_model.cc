@@ -195,6 +195,43 @@ namespace PolyFrac
 
 
 
+  std::vector<std::string>
+  flow_entries()
+  {
+    return {"Flow/Permeability",
+            "Flow/Viscosity",
+            "Flow/Inverse Biot modulus",
+            "Flow/Initial pressure",
+            "Flow/Fracture aperture at contact",
+            "Flow/Minimum fracture aperture",
+            "Flow/Fracture normal transmissibility",
+            "Flow/Fracture compressibility",
+            "Flow/Matrix source",
+            "Flow/Fracture source",
+            "Flow/Pressure boundary ids",
+            "Flow/Pressure boundary expression",
+            "Flow/Flux boundary ids",
+            "Flow/Flux boundary expression",
+            "Flow/HFV stabilisation",
+            "Exact solution/Matrix pressure",
+            "Exact solution/Fracture pressure"};
+  }
+
+
+
+  namespace
+  {
+    const ModelRegistry::Registration<FlowModel> flow(
+      "flow",
+      "matrix and fracture flow (subsection Flow) with the aperture d_0, by "
+      "implicit Euler steps (subsection Time).",
+      flow_entries,
+      [](const Parameters &) { return true; },
+      false);
+  } // namespace
+
+
+
   template class FlowModel<2>;
   template class FlowModel<3>;
 } // namespace PolyFrac

@@ -1,6 +1,5 @@
-#include <polyfrac/app/flow_model.h>
 #include <polyfrac/app/mechanics_models.h>
-#include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/base/exception_message.h>
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -350,17 +349,89 @@ namespace PolyFrac
   make_model(const Parameters               &prm,
              const LevelDiscretization<dim> &discretization)
   {
-    if (prm.model == "contact mechanics")
-      return std::make_unique<ContactMechanicsModel<dim>>(prm, discretization);
-    if (prm.model == "flow")
-      return std::make_unique<FlowModel<dim>>(prm, discretization);
-    if (prm.model == "poromechanics")
-      return std::make_unique<PoromechanicsModel<dim>>(prm, discretization);
-    AssertThrow(prm.model == "elasticity",
-                ExcMessage("Model = " + prm.model +
-                           " has no implementation in this build."));
-    return std::make_unique<ElasticityModel<dim>>(prm, discretization);
+    const ModelRegistry::Description &model = prm.model_description();
+    if constexpr (dim == 2)
+      return model.create_2d(prm, discretization);
+    else
+      return model.create_3d(prm, discretization);
   }
+
+
+
+  std::vector<std::string>
+  mechanics_entries()
+  {
+    return {"Material/Lame lambda",
+            "Material/Lame mu",
+            "Body force/Function expression",
+            "Boundary conditions/Dirichlet boundary ids",
+            "Boundary conditions/Dirichlet components",
+            "Boundary conditions/Dirichlet expression",
+            "Boundary conditions/Neumann boundary ids",
+            "Boundary conditions/Neumann traction",
+            "Initial stress/Stress",
+            "Contact/Bubble placement",
+            "Exact solution/Displacement",
+            "Exact solution/Displacement jump",
+            "Linear solver/Smoother sweeps"};
+  }
+
+
+
+  std::vector<std::string>
+  contact_entries()
+  {
+    std::vector<std::string> entries = {"Contact/Bubbles",
+                                        "Contact/Complementarity parameter",
+                                        "Contact/Number of load steps",
+                                        "Nonlinear solver/Maximum iterations",
+                                        "Nonlinear solver/Tolerance",
+                                        "Nonlinear solver/Initial guess",
+                                        "Nonlinear solver/Forcing term",
+                                        "Exact solution/Contact traction"};
+    for (const std::string &entry : ContactParameters::friction_law_entries())
+      entries.push_back(entry);
+    return entries;
+  }
+
+
+
+  namespace
+  {
+    /** The loads on the fractures, which only the mechanical models take
+     * (a fracture pressure is an unknown of the flow). */
+    const std::vector<std::string> fracture_loads = {"Fractures/Pressure",
+                                                     "Fractures/Traction"};
+
+    const ModelRegistry::Registration<ElasticityModel> elasticity(
+      "elasticity",
+      "linear elasticity with a prescribed load on the fractures (pressure "
+      "and traction).",
+      [] {
+        std::vector<std::string> entries = mechanics_entries();
+        entries.insert(entries.end(),
+                       fracture_loads.begin(),
+                       fracture_loads.end());
+        return entries;
+      },
+      [](const Parameters &) { return false; },
+      true);
+
+    const ModelRegistry::Registration<ContactMechanicsModel> contact_mechanics(
+      "contact mechanics",
+      "frictional contact on the fractures (subsection Contact), one static "
+      "solve or quasi-static steps in time (Contact/Quasi-static time "
+      "steps).",
+      [] {
+        std::vector<std::string> entries = mechanics_entries();
+        for (const auto &list : {fracture_loads, contact_entries()})
+          entries.insert(entries.end(), list.begin(), list.end());
+        entries.push_back("Contact/Quasi-static time steps");
+        return entries;
+      },
+      [](const Parameters &prm) { return prm.contact.quasi_static_steps; },
+      true);
+  } // namespace
 
 
 

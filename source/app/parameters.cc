@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <polyfrac/app/model_registry.h>
 #include <polyfrac/app/parameters.h>
 #include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/expressions.h>
@@ -249,17 +250,18 @@ namespace PolyFrac
     prm.leave_subsection();
 
     prm.enter_subsection("Model");
-    prm.declare_entry(
-      "Model",
-      "elasticity",
-      Patterns::Selection("elasticity|contact mechanics|flow|poromechanics"),
-      "Physics of the scene. elasticity: linear elasticity with "
-      "a prescribed load on the fractures (pressure and "
-      "traction). contact mechanics: frictional contact on the "
-      "fractures (subsection Contact). flow: matrix and fracture "
-      "flow (subsection Flow) with the aperture d_0, by implicit Euler "
-      "steps (subsection Time). poromechanics: both, coupled (Biot, "
-      "fracture pressure, cubic law on d_0 - [u]_n).");
+    {
+      std::string names, documentation = "Physics of the scene.";
+      for (const ModelRegistry::Description &model : ModelRegistry::models())
+        {
+          names += (names.empty() ? "" : "|") + model.name;
+          documentation += " " + model.name + ": " + model.description;
+        }
+      prm.declare_entry("Model",
+                        "elasticity",
+                        Patterns::Selection(names),
+                        documentation);
+    }
     prm.leave_subsection();
 
     MeshParameters::declare_parameters(prm, dim);
@@ -432,14 +434,19 @@ namespace PolyFrac
   void
   Parameters::check_model_choices() const
   {
+    std::string with_indicators;
+    for (const ModelRegistry::Description &other : ModelRegistry::models())
+      if (other.has_error_indicators)
+        with_indicators +=
+          (with_indicators.empty() ? "" : " and ") + other.name;
     AssertThrow(mesh.refinement == MeshRefinement::uniform ||
-                  model == "elasticity" || model == "contact mechanics",
+                  model_description().has_error_indicators,
                 ExcMessage(where("Mesh") +
                            ": <Refinement = adaptive> needs an a "
                            "posteriori error indicator, which only "
-                           "Model = elasticity and contact mechanics "
-                           "have so far; Model = " +
-                           model + " needs <Refinement = uniform>."));
+                           "Model = " +
+                           with_indicators + " have so far; Model = " + model +
+                           " needs <Refinement = uniform>."));
     AssertThrow(mesh.fracture_refinements == 0 || fractures.any(),
                 ExcMessage(where("Mesh") + ": <Fracture refinements> = " +
                            std::to_string(mesh.fracture_refinements) +
@@ -448,7 +455,7 @@ namespace PolyFrac
                            (dim == 2 ? "Segments" : "Polygons") +
                            " and Gmsh physical tags are empty): set it "
                            "to 0 or give the fractures."));
-    AssertThrow((model != "flow" && model != "poromechanics") ||
+    AssertThrow(uses("Fractures/Pressure") ||
                   mechanics.fracture_pressure == "0",
                 ExcMessage(where("Fractures") +
                            ": <Pressure> = " + mechanics.fracture_pressure +
@@ -458,8 +465,8 @@ namespace PolyFrac
                            "Flow/Initial pressure (an expression in x, which "
                            "sets matrix and fracture pressures), and remove "
                            "Fractures/Pressure."));
-    AssertThrow(model != "contact mechanics" || !contact.quasi_static_steps ||
-                  contact.n_load_steps == 1,
+    AssertThrow(!uses("Contact/Quasi-static time steps") ||
+                  !contact.quasi_static_steps || contact.n_load_steps == 1,
                 ExcMessage(where("Contact") + ": <Number of load steps> = " +
                            std::to_string(contact.n_load_steps) +
                            " with <Quasi-static time steps> = true: the "
@@ -474,7 +481,7 @@ namespace PolyFrac
   void
   Parameters::check_time_steps() const
   {
-    if (model != "flow" && model != "poromechanics")
+    if (!is_time_dependent())
       return;
     // Fixed steps: the finest level's count is known now (each output time
     // may add one).
@@ -506,7 +513,7 @@ namespace PolyFrac
     const std::string where = "In <" + file_name +
                               ">, Exact solution/Analytic solution = " + name +
                               ": ";
-    AssertThrow(model == "poromechanics",
+    AssertThrow(uses("Exact solution/Analytic solution"),
                 ExcMessage(where + "a poroelastic solution needs Model/Model "
                                    "= poromechanics."));
     AssertThrow(exact.analytic_solution != AnalyticSolution::mandel || dim == 2,
@@ -654,8 +661,28 @@ namespace PolyFrac
   bool
   Parameters::is_time_dependent() const
   {
-    return model == "flow" || model == "poromechanics" ||
-           (model == "contact mechanics" && contact.quasi_static_steps);
+    return model_description().steps_in_time(*this);
+  }
+
+
+
+  const ModelRegistry::Description &
+  Parameters::model_description() const
+  {
+    return ModelRegistry::find(model);
+  }
+
+
+
+  bool
+  Parameters::uses(const std::string &entry) const
+  {
+    const std::vector<std::string> dependent =
+      ModelRegistry::model_dependent_entries();
+    if (std::find(dependent.begin(), dependent.end(), entry) == dependent.end())
+      return true;
+    const std::vector<std::string> used = model_description().entries();
+    return std::find(used.begin(), used.end(), entry) != used.end();
   }
 
 
@@ -663,33 +690,28 @@ namespace PolyFrac
   void
   Parameters::warn_unused_entries()
   {
-    // Entries the chosen model ignores, warned about when set (differ
-    // from their default).
+    // Entries set (different from their default) that the scene does not
+    // read: each warned about once, with the first reason found.
     ParameterHandler defaults;
     declare(defaults, dim);
-    const auto value = [](ParameterHandler  &handler,
-                          const std::string &subsection,
-                          const std::string &entry) {
-      handler.enter_subsection(subsection);
-      const std::string text = handler.get(entry);
+    const auto value = [](ParameterHandler &handler, const std::string &path) {
+      const std::size_t slash = path.find('/');
+      handler.enter_subsection(path.substr(0, slash));
+      const std::string text = handler.get(path.substr(slash + 1));
       handler.leave_subsection();
       return text;
     };
+    std::vector<std::string> warned;
     // @p path is "Subsection/Entry".
     const auto warn_if_set = [&](const std::string &path,
-                                 const std::string &user = "") {
-      const std::size_t slash      = path.find('/');
-      const std::string subsection = path.substr(0, slash);
-      const std::string entry      = path.substr(slash + 1);
-      if (value(*prm, subsection, entry) != value(defaults, subsection, entry))
-        warnings.push_back(path + " is not used by " +
-                           (user.empty() ? "Model = " + model : user) +
-                           " and is ignored");
-    };
-    const auto warn_all_if_set = [&](const std::vector<std::string> &paths,
-                                     const std::string &user = "") {
-      for (const std::string &path : paths)
-        warn_if_set(path, user);
+                                 const std::string &user) {
+      if (std::find(warned.begin(), warned.end(), path) == warned.end() &&
+          value(*prm, path) != value(defaults, path))
+        {
+          warned.push_back(path);
+          warnings.push_back(path + " is not used by " + user +
+                             " and is ignored");
+        }
     };
     const auto warn_unused = [&](const std::vector<UnusedEntry> &unused) {
       for (const auto &[path, user] : unused)
@@ -697,160 +719,79 @@ namespace PolyFrac
     };
 
     warn_unused(FractureParameters::unused_entries(dim));
-    if (model == "elasticity")
-      {
-        warn_all_if_set({"Contact/Bubbles",
-                         "Contact/Complementarity parameter",
-                         "Contact/Number of load steps",
-                         "Contact/Quasi-static time steps",
-                         "Nonlinear solver/Maximum iterations",
-                         "Nonlinear solver/Tolerance",
-                         "Nonlinear solver/Initial guess",
-                         "Nonlinear solver/Forcing term",
-                         "Exact solution/Contact traction"});
-        warn_all_if_set(ContactParameters::friction_law_entries());
-      }
-    else
-      {
-        // A load of elasticity and contact mechanics only: the other
-        // models ignore it (Elasticity adds what it is given).
-        if (model != "contact mechanics")
-          {
-            warn_if_set("Fractures/Traction");
-            mechanics.fracture_traction = ParameterParsing::zero_vector(dim);
-          }
-        // The friction laws' entries that the chosen law leaves unused.
-        if (model != "flow")
-          warn_unused(contact.unused_entries());
-        if (!contact.bubbles && solver.method == SolverMethod::amg)
-          warnings.push_back(
-            "Linear solver/Method = AMG condenses the contact Newton steps "
-            "through the bubbles; with Contact/Bubbles = false every step "
-            "uses UMFPACK on the saddle point");
-      }
-    if (model == "elasticity" || model == "contact mechanics")
-      warn_all_if_set({"Flow/Permeability",
-                       "Flow/Viscosity",
-                       "Flow/Biot coefficient",
-                       "Flow/Inverse Biot modulus",
-                       "Flow/Initial porosity",
-                       "Flow/Initial pressure",
-                       "Flow/Fracture aperture at contact",
-                       "Flow/Minimum fracture aperture",
-                       "Flow/Fracture normal transmissibility",
-                       "Flow/Fracture compressibility",
-                       "Flow/Matrix source",
-                       "Flow/Fracture source",
-                       "Flow/Pressure boundary ids",
-                       "Flow/Pressure boundary expression",
-                       "Flow/Flux boundary ids",
-                       "Flow/Flux boundary expression",
-                       "Flow/HFV stabilisation",
-                       "Flow/Face bubbles",
-                       "Flow/Pressure stabilisation",
-                       "Exact solution/Matrix pressure",
-                       "Exact solution/Fracture pressure"});
     if (!is_time_dependent())
       {
-        warn_all_if_set({"Time/End time",
-                         "Time/Time step",
-                         "Time/Refine time step with mesh",
-                         "Time/Adaptive",
-                         "Time/Maximum time step",
-                         "Time/Output times",
-                         "Time/Maximum steps",
-                         "Time/Equilibrium start"},
-                        "a static Model = " + model);
+        for (const std::string entry : {"End time",
+                                        "Time step",
+                                        "Refine time step with mesh",
+                                        "Adaptive",
+                                        "Maximum time step",
+                                        "Output times",
+                                        "Maximum steps",
+                                        "Equilibrium start"})
+          warn_if_set("Time/" + entry, "a static Model = " + model);
         warn_if_set("Output/Checkpoint interval",
                     "a static Model = " + model + " (one step, no checkpoint)");
       }
-    if (model == "flow" ||
-        (model == "contact mechanics" && is_time_dependent()))
-      warn_if_set("Time/Equilibrium start");
-    if (model == "poromechanics")
-      warn_if_set("Contact/Quasi-static time steps",
-                  "Model = poromechanics (its steps are in time anyway)");
     if (exact.analytic_solution != AnalyticSolution::none)
       warn_if_set("Flow/Initial pressure",
                   "Exact solution/Analytic solution = " +
                     selection_name(exact.analytic_solution) +
                     " (its state at t = 0 is the initial state)");
-    if (model != "poromechanics")
-      warn_all_if_set({"Nonlinear solver/Coupling tolerance",
-                       "Nonlinear solver/Maximum coupling iterations",
-                       "Nonlinear solver/Anderson depth",
-                       "Nonlinear solver/Coupling scheme"});
-    // The entries that the mesh's own choices leave unused; the corners
-    // also give the box of an analytic solution.
-    warn_unused(mesh.unused_entries());
-    if (mesh.source == MeshSource::gmsh &&
-        exact.analytic_solution == AnalyticSolution::none)
-      warn_all_if_set({"Mesh/Lower left corner", "Mesh/Upper right corner"},
-                      "Mesh/Source = gmsh");
-    // Entries of the model that this scene leaves without an object (those
-    // of other models are warned about above).
-    if (!fractures.any() &&
-        (model == "elasticity" || model == "contact mechanics"))
-      warn_all_if_set({"Fractures/Pressure", "Fractures/Traction"},
-                      "a scene without fractures");
-    if (model == "flow" || model == "poromechanics")
-      {
-        if (flow.pressure_ids.empty())
-          warn_if_set("Flow/Pressure boundary expression",
-                      "a scene without Flow/Pressure boundary ids");
-        if (flow.flux_ids.empty())
-          warn_if_set("Flow/Flux boundary expression",
-                      "a scene without Flow/Flux boundary ids");
-      }
-    if (model != "flow" && mechanics.boundary.neumann_ids.empty())
-      warn_if_set("Boundary conditions/Neumann traction",
-                  "a scene without Boundary conditions/Neumann boundary ids");
-    if (exact.analytic_solution == AnalyticSolution::none)
+    else
       warn_if_set("Exact solution/Analytic load",
                   "Exact solution/Analytic solution = none");
-    if (model == "flow")
-      {
-        // The mechanics, which Model = flow does not solve.
-        warn_all_if_set({"Boundary conditions/Dirichlet boundary ids",
-                         "Boundary conditions/Dirichlet components",
-                         "Boundary conditions/Dirichlet expression",
-                         "Boundary conditions/Neumann boundary ids",
-                         "Boundary conditions/Neumann traction",
-                         "Contact/Bubbles",
-                         "Contact/Bubble placement",
-                         "Contact/Complementarity parameter",
-                         "Contact/Number of load steps",
-                         "Contact/Quasi-static time steps"});
-        warn_all_if_set(ContactParameters::friction_law_entries());
-        warn_all_if_set({"Exact solution/Displacement",
-                         "Exact solution/Displacement jump",
-                         "Exact solution/Contact traction",
-                         "Body force/Function expression",
-                         "Initial stress/Stress",
-                         "Material/Lame lambda",
-                         "Material/Lame mu",
-                         "Nonlinear solver/Maximum iterations",
-                         "Nonlinear solver/Tolerance",
-                         "Nonlinear solver/Initial guess",
-                         "Flow/Pressure stabilisation",
-                         "Flow/Face bubbles",
-                         // No volume coupling: the storage is Inverse Biot
-                         // modulus alone.
-                         "Flow/Biot coefficient",
-                         "Flow/Initial porosity",
-                         // The flow AMG keeps ML's smoother; there is no
-                         // contact Newton.
-                         "Linear solver/Smoother sweeps",
-                         "Nonlinear solver/Forcing term"});
-      }
-    else if (solver.method == SolverMethod::direct && !solver.automatic)
-      {
-        // The AMG's smoother and the condensed steps' Krylov stop.
-        const std::string direct = "Linear solver/Method = direct";
-        warn_if_set("Linear solver/Smoother sweeps", direct);
-        if (model != "elasticity")
-          warn_if_set("Nonlinear solver/Forcing term", direct);
-      }
+
+    // The model-dependent entries that the chosen model does not read.
+    for (const std::string &entry : ModelRegistry::model_dependent_entries())
+      if (!uses(entry))
+        warn_if_set(entry, "Model = " + model);
+    // A load of the mechanical models only (Elasticity adds what it is
+    // given).
+    if (!uses("Fractures/Traction"))
+      mechanics.fracture_traction = ParameterParsing::zero_vector(dim);
+
+    // The entries that the components' own choices leave unused.
+    if (uses("Contact/Friction law"))
+      warn_unused(contact.unused_entries());
+    warn_unused(mesh.unused_entries());
+    // The corners also give the box of an analytic solution.
+    if (mesh.source == MeshSource::gmsh &&
+        exact.analytic_solution == AnalyticSolution::none)
+      for (const std::string entry :
+           {"Mesh/Lower left corner", "Mesh/Upper right corner"})
+        warn_if_set(entry, "Mesh/Source = gmsh");
+    if (uses("Contact/Bubbles") && !contact.bubbles &&
+        solver.method == SolverMethod::amg)
+      warnings.push_back(
+        "Linear solver/Method = AMG condenses the contact Newton steps "
+        "through the bubbles; with Contact/Bubbles = false every step "
+        "uses UMFPACK on the saddle point");
+    if (solver.method == SolverMethod::direct && !solver.automatic)
+      for (const std::string entry :
+           {"Linear solver/Smoother sweeps", "Nonlinear solver/Forcing term"})
+        if (uses(entry))
+          warn_if_set(entry, "Linear solver/Method = direct");
+
+    // Entries of the model that this scene leaves without an object.
+    const std::vector<std::pair<std::string, std::string>> objects = {
+      {"Fractures/Pressure",
+       fractures.any() ? "" : "a scene without fractures"},
+      {"Fractures/Traction",
+       fractures.any() ? "" : "a scene without fractures"},
+      {"Flow/Pressure boundary expression",
+       flow.pressure_ids.empty() ?
+         "a scene without Flow/Pressure boundary ids" :
+         ""},
+      {"Flow/Flux boundary expression",
+       flow.flux_ids.empty() ? "a scene without Flow/Flux boundary ids" : ""},
+      {"Boundary conditions/Neumann traction",
+       mechanics.boundary.neumann_ids.empty() ?
+         "a scene without Boundary conditions/Neumann boundary ids" :
+         ""}};
+    for (const auto &[entry, user] : objects)
+      if (!user.empty() && uses(entry))
+        warn_if_set(entry, user);
   }
 
 

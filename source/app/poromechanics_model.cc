@@ -1,3 +1,4 @@
+#include <polyfrac/app/flow_model.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/poromechanics_model.h>
 #include <polyfrac/base/anderson_acceleration.h>
@@ -989,6 +990,37 @@ namespace PolyFrac
                          flow.fracture_velocities(d, pressure)),
        {"aperture", d}});
   }
+
+
+
+  namespace
+  {
+    const ModelRegistry::Registration<PoromechanicsModel> poromechanics(
+      "poromechanics",
+      "flow and mechanics coupled (Biot, the fracture pressure on the "
+      "fracture faces, the cubic law on d_0 - [u]_n), with frictional "
+      "contact on the fractures.",
+      [] {
+        std::vector<std::string> entries = mechanics_entries();
+        for (const auto &list : {contact_entries(), flow_entries()})
+          entries.insert(entries.end(), list.begin(), list.end());
+        for (const std::string entry :
+             {"Flow/Biot coefficient",
+              "Flow/Initial porosity",
+              "Flow/Face bubbles",
+              "Flow/Pressure stabilisation",
+              "Nonlinear solver/Coupling tolerance",
+              "Nonlinear solver/Maximum coupling iterations",
+              "Nonlinear solver/Anderson depth",
+              "Nonlinear solver/Coupling scheme",
+              "Time/Equilibrium start",
+              "Exact solution/Analytic solution"})
+          entries.push_back(entry);
+        return entries;
+      },
+      [](const Parameters &) { return true; },
+      false);
+  } // namespace
 
 
 

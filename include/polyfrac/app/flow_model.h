@@ -5,6 +5,7 @@
 
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/app/model_registry.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/physics/flow.h>
@@ -98,6 +99,12 @@ namespace PolyFrac
     FluidVolumes run_volumes;
     double       time = 0;
   };
+
+
+  /** The entries of the flow that the models with flow read
+   * (ModelRegistry::Description::entries). */
+  std::vector<std::string>
+  flow_entries();
 } // namespace PolyFrac
 
 #endif

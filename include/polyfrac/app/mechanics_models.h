@@ -3,6 +3,7 @@
 
 #include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/app/model_registry.h>
 #include <polyfrac/contact/contact_mechanics.h>
 #include <polyfrac/physics/elasticity.h>
 #include <polyfrac/physics/mechanical_state.h>
@@ -189,7 +190,18 @@ namespace PolyFrac
 
 
 
-  /** The model Model/Model of @p prm names, on @p discretization. */
+  /** The entries of the mechanics that every mechanical model reads
+   * (ModelRegistry::Description::entries). */
+  std::vector<std::string>
+  mechanics_entries();
+
+  /** The entries of the contact problem and its Newton method, the friction
+   * laws' among them, that the models with contact read. */
+  std::vector<std::string>
+  contact_entries();
+
+  /** The model Model/Model of @p prm names (ModelRegistry), on
+   * @p discretization. */
   template <int dim>
   std::unique_ptr<Model<dim>>
   make_model(const Parameters               &prm,

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <polyfrac/app/model_registry.h>
 #include <polyfrac/base/parameter_context.h>
 #include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/base/time_parameters.h>
@@ -114,10 +115,20 @@ namespace PolyFrac
     bool
     is_time_dependent() const;
 
+    /** The registered model that Model/Model chooses. */
+    const ModelRegistry::Description &
+    model_description() const;
+
+    /** Whether the chosen model reads @p entry ("Subsection/Entry"): true
+     * for an entry that no model lists (it does not depend on the model),
+     * else whether the chosen model lists it. */
+    bool
+    uses(const std::string &entry) const;
+
     /** Warnings collected while parsing (entries set but unused). */
     std::vector<std::string> warnings;
 
-    /** Model/Model: elasticity | contact mechanics | flow | poromechanics. */
+    /** Model/Model: the name of a registered model (ModelRegistry). */
     std::string model;
 
     /** The subsection Mesh. */
