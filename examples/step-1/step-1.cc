@@ -491,7 +491,8 @@ namespace Step1
     for (unsigned int level = 0; level < prm.convergence.n_refinement_levels;
          ++level)
       {
-        const LevelDiscretization<dim> discretization(prm, level);
+        const LevelDiscretization<dim> discretization(prm.level_parameters(),
+                                                      level);
         const auto                    &geometry = *discretization.geometry;
         const auto                    &network  = *discretization.network;
         const auto                    &dofs     = *discretization.dofs;

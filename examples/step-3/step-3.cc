@@ -226,9 +226,9 @@
 // is written out here.
 #include <deal.II/base/mpi.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/parameters.h>
 #include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/discretization/level_discretization.h>
 
 #include <algorithm>
 #include <cmath>
@@ -464,7 +464,7 @@ namespace Step3
                            "depth > 0."));
 
     // Step 1: the discretisation, on level 0 of the scene.
-    const LevelDiscretization<dim> discretization(prm, 0);
+    const LevelDiscretization<dim> discretization(prm.level_parameters(), 0);
     out << "Mesh: " << discretization.geometry->mesh.n_cells() << " polytopes, "
         << discretization.network->n_fracture_faces() << " fracture faces"
         << std::endl;

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <polyfrac/app/memory_estimate.h>
 #include <polyfrac/app/model_registry.h>
 #include <polyfrac/app/parameters.h>
 #include <polyfrac/base/checked_file.h>
@@ -662,6 +663,23 @@ namespace PolyFrac
   Parameters::is_time_dependent() const
   {
     return model_description().steps_in_time(*this);
+  }
+
+
+
+  LevelParameters
+  Parameters::level_parameters() const
+  {
+    return {mesh,
+            fractures,
+            contact.split_bubbles ? BubblePlacement::split :
+                                    BubblePlacement::plus_side,
+            file_name,
+            [this](const double       n_cells,
+                   const unsigned int n_ranks_on_node,
+                   const unsigned int n_ranks) {
+              check_memory(*this, n_cells, n_ranks_on_node, n_ranks);
+            }};
   }
 
 

@@ -4,12 +4,12 @@
 #include <polyfrac/app/checkpoint.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/memory_estimate.h>
-#include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/app/simulator.h>
 #include <polyfrac/app/time_stepping.h>
 #include <polyfrac/base/checked_file.h>
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/base/progress_line.h>
+#include <polyfrac/discretization/mesh_builder.h>
 #include <polyfrac/postprocessing/verification.h>
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -631,10 +631,12 @@ namespace PolyFrac
     timer.enter_subsection("mesh");
     auto discretization_pointer =
       coarser_discretization ?
-        std::make_unique<LevelDiscretization<dim>>(prm,
+        std::make_unique<LevelDiscretization<dim>>(prm.level_parameters(),
                                                    *coarser_discretization,
                                                    coarser_indicators) :
-        std::make_unique<LevelDiscretization<dim>>(prm, level, communicator);
+        std::make_unique<LevelDiscretization<dim>>(prm.level_parameters(),
+                                                   level,
+                                                   communicator);
     // Only an adaptive cycle refines the triangulation again: otherwise it
     // goes before the model is built (0.17 KB per unknown at the 3D peak,
     // benchmarks/README.md, "Memory budget").

@@ -16,8 +16,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/poromechanics_model.h>
+#include <polyfrac/discretization/level_discretization.h>
 
 #include <sstream>
 
@@ -48,7 +48,9 @@ namespace
                       {"Flow/Face bubbles=false",
                        "Flow/Pressure stabilisation=0.25"});
     prm.parse(SOURCE_DIR "/../../prm/poromechanics-2d-slip.prm", settings);
-    const LevelDiscretization<2> discretization(prm, 0, MPI_COMM_SELF);
+    const LevelDiscretization<2> discretization(prm.level_parameters(),
+                                                0,
+                                                MPI_COMM_SELF);
     std::ostringstream           log;
 
     PoromechanicsModel<2>           model(prm, discretization);

@@ -10,7 +10,7 @@
 // D L/(2π h), doubling with each level; on 32³ (h = 0.0625) the mesh
 // folded and the network threw, its faces covering more than the fracture.
 
-#include <polyfrac/app/level_discretization.h>
+#include <polyfrac/discretization/level_discretization.h>
 
 #include "../tests.h"
 
@@ -45,7 +45,8 @@ main()
   std::vector<double> strains;
   for (unsigned int level = 0; level < 4; ++level)
     {
-      const LevelDiscretization<3> discretization(prm, level);
+      const LevelDiscretization<3> discretization(prm.level_parameters(),
+                                                  level);
       strains.push_back(largest_strain(discretization));
       std::cout << "level " << level << ": " << discretization.mesh->n_cells()
                 << " cells, " << discretization.network->n_fracture_faces()

@@ -37,7 +37,7 @@ check(const std::string &name,
       Parameters         prm(dim);
       prm.parse(file);
       AssertThrow(dim == 2, ExcInternalError());
-      const LevelDiscretization<2> level(prm, 0);
+      const LevelDiscretization<2> level(prm.level_parameters(), 0);
       if (prm.model == "contact mechanics")
         ContactMechanics<2>(prm.contact,
                             prm.nonlinear,

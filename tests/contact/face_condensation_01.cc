@@ -92,7 +92,7 @@ check(const unsigned int subdivisions, const unsigned int n_states)
   Parameters prm = Testing::default_parameters(dim, subdivisions);
   Testing::add_crossing_fractures(prm, dim);
   prm.solver.tolerance = 1e-14;
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;
   const auto                    &network  = *level.network;
   const auto                    &dofs     = *level.dofs;

@@ -66,7 +66,7 @@ check(const std::string &name, const std::function<void(Parameters &)> &setup)
   Parameters prm = Testing::default_parameters(dim, 4);
   Testing::add_crossing_fractures(prm, dim);
   setup(prm);
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;
   const auto                    &network  = *level.network;
   const auto                    &dofs     = *level.dofs;

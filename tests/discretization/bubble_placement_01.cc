@@ -29,7 +29,7 @@ check(const std::string &cells, const bool split)
   Testing::add_crossing_fractures(prm, dim);
   prm.mesh.cell_type        = parse_selection<CellType>(cells);
   prm.contact.split_bubbles = split;
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;
   const auto                    &network  = *level.network;
   const auto                    &dofs     = *level.dofs;

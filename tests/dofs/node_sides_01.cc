@@ -18,7 +18,7 @@ check(const std::string                        &name,
 {
   Parameters prm           = Testing::default_parameters(dim, 4);
   prm.fractures.geometries = geometries;
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   unsigned int                   at_probe = 0;
   for (const auto &side : level.dofs->node_sides)
     if (level.mesh->vertices[side.vertex].distance(probe) < 1e-12)

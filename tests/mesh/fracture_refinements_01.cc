@@ -27,13 +27,13 @@ namespace
   {
     Parameters prm(dim);
     set_up(prm);
-    const LevelDiscretization<dim> base(prm, 0);
+    const LevelDiscretization<dim> base(prm.level_parameters(), 0);
     const unsigned int base_faces = base.network->n_fracture_faces();
     const unsigned int base_cells = base.triangulation.n_active_cells();
     for (unsigned int n = 0; n <= max_refinements; ++n)
       {
         prm.mesh.fracture_refinements = n;
-        const LevelDiscretization<dim> level(prm, 0);
+        const LevelDiscretization<dim> level(prm.level_parameters(), 0);
         const auto                    &mesh    = *level.mesh;
         const auto                    &network = *level.network;
 

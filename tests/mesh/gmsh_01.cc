@@ -115,7 +115,7 @@ namespace
     prm.mesh.file_name               = std::string(SOURCE_DIR) + "/" + geo;
     prm.fractures.gmsh_physical_tags = {10};
     for (unsigned int level = 0; level < 2; ++level)
-      check_level<dim>(LevelDiscretization<dim>(prm, level),
+      check_level<dim>(LevelDiscretization<dim>(prm.level_parameters(), level),
                        "level " + std::to_string(level),
                        exact_normal,
                        exact_measure);
@@ -126,25 +126,28 @@ namespace
     // nodes on it) and one adaptive cycle that refines the + cells of the
     // fracture.
     const unsigned int level_0_faces =
-      LevelDiscretization<dim>(prm, 0).network->n_fracture_faces();
+      LevelDiscretization<dim>(prm.level_parameters(), 0)
+        .network->n_fracture_faces();
     prm.mesh.local_refinements = 1;
     prm.mesh.box_lower         = Point<3>(0.5, 0.5, 0.5);
     prm.mesh.box_upper         = Point<3>(1, 1, 1);
-    const LevelDiscretization<dim> local(prm, 0);
+    const LevelDiscretization<dim> local(prm.level_parameters(), 0);
     check_level<dim>(local,
                      "level 0, refined by deal.II in [0.5, 1]^dim",
                      exact_normal,
                      exact_measure);
     prm.mesh.local_refinements = 0;
     prm.mesh.refinement        = MeshRefinement::adaptive;
-    const LevelDiscretization<dim> coarse(prm, 0);
+    const LevelDiscretization<dim> coarse(prm.level_parameters(), 0);
     Vector<float>                  indicators(coarse.mesh->n_cells());
     for (const auto &ff : coarse.network->fracture_faces)
       indicators(ff.plus_cell) = 1;
     // No more cells than the + cells (the others tie at 0).
     prm.mesh.refined_fraction =
       0.5 * coarse.network->n_fracture_faces() / coarse.mesh->n_cells();
-    const LevelDiscretization<dim> adapted(prm, coarse, indicators);
+    const LevelDiscretization<dim> adapted(prm.level_parameters(),
+                                           coarse,
+                                           indicators);
     check_level<dim>(adapted,
                      "level 0 after an adaptive cycle",
                      exact_normal,

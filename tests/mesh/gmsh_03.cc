@@ -65,7 +65,7 @@ main()
   {
     Parameters prm              = parameters(2, "gmsh_03.msh");
     prm.mesh.global_refinements = 1;
-    const LevelDiscretization<2> discretization(prm, 0);
+    const LevelDiscretization<2> discretization(prm.level_parameters(), 0);
     double                       length = 0;
     for (const auto &ff : discretization.network->fracture_faces)
       length += discretization.geometry->faces[ff.face].measure;
@@ -115,6 +115,6 @@ main()
     "Segments with gmsh", "cannot be combined with Mesh/Source = gmsh", [] {
       Parameters prm           = parameters(2, "gmsh_01.geo");
       prm.fractures.geometries = {{Point<3>(0, 0, 0), Point<3>(1, 1, 0)}};
-      const LevelDiscretization<2> discretization(prm, 0);
+      const LevelDiscretization<2> discretization(prm.level_parameters(), 0);
     });
 }

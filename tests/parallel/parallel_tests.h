@@ -8,8 +8,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/discretization/level_discretization.h>
 
 #include "../tests.h"
 
@@ -26,7 +26,9 @@ namespace PolyFrac::Testing
                   const MPI_Comm    communicator,
                   const Extract    &extract)
   {
-    const LevelDiscretization<dim> discretization(prm, 0, communicator);
+    const LevelDiscretization<dim> discretization(prm.level_parameters(),
+                                                  0,
+                                                  communicator);
     ModelType                      model(prm, discretization);
     std::ostringstream             ignored;
     const auto step = [&](const double t_old, const double t_new) {

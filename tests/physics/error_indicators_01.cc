@@ -29,7 +29,8 @@ namespace
   double
   global_indicator(const Parameters &prm, const unsigned int level)
   {
-    const LevelDiscretization<dim> discretization(prm, level);
+    const LevelDiscretization<dim> discretization(prm.level_parameters(),
+                                                  level);
     const auto                     model = make_model<dim>(prm, discretization);
     std::ostringstream             log;
     const StepReport               report = model->step(0, 0, log);
@@ -76,7 +77,7 @@ namespace
       prm.mechanics.boundary.neumann_traction +=
         (d == 0 ? "" : "; ") + std::to_string(sigma[d][0]);
     {
-      const LevelDiscretization<dim> discretization(prm, 0);
+      const LevelDiscretization<dim> discretization(prm.level_parameters(), 0);
       const Tensor<1, dim>           traction =
         -(sigma * discretization.network->normal(0));
       prm.mechanics.fracture_traction.clear();

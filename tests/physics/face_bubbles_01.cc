@@ -48,7 +48,7 @@ namespace
     if (dim == 3)
       prm.mechanics.boundary.neumann_ids.insert(
         prm.mechanics.boundary.neumann_ids.end(), {4, 5});
-    const LevelDiscretization<dim> discretization(prm, 0);
+    const LevelDiscretization<dim> discretization(prm.level_parameters(), 0);
     const auto                    &geometry = *discretization.geometry;
     const auto                    &dofs     = *discretization.dofs;
     Elasticity<dim>                elasticity(

@@ -54,7 +54,7 @@ check(const std::string                       &mesh_name,
   prm.flow.normal_transmissibility = 3;
   prm.flow.aperture_at_contact     = 0.4;
   test.setup(prm);
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;
   const auto                    &network  = *level.network;
   const FractureEdges<dim>       edges(geometry, network);

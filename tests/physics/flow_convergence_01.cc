@@ -117,7 +117,8 @@ check(const std::string                       &family,
   std::vector<double> h, e_m, e_f;
   for (unsigned int level = 0; level < n_levels; ++level)
     {
-      const LevelDiscretization<dim> discretization(prm, level);
+      const LevelDiscretization<dim> discretization(prm.level_parameters(),
+                                                    level);
       const auto                    &geometry = *discretization.geometry;
       const auto                    &network  = *discretization.network;
       const FractureEdges<dim>       edges(geometry, network);

@@ -39,7 +39,7 @@ check(const std::string &cell_type, const double aperture)
   prm.flow.pressure_ids             = {0, 1};
   prm.flow.pressure_expression      = "0.5*(1 - x)";
   prm.flow.initial_pressure         = "7";
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;
   const auto                    &network  = *level.network;
   const FractureEdges<dim>       edges(geometry, network);

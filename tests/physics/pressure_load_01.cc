@@ -25,7 +25,7 @@ check(const std::string &cell_type)
   Parameters prm     = Testing::default_parameters(dim, 4);
   prm.mesh.cell_type = parse_selection<CellType>(cell_type);
   Testing::add_crossing_fractures(prm, dim);
-  const LevelDiscretization<dim> level(prm, 0);
+  const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;
   const BiotCoupling<dim> coupling(geometry, *level.network, *level.dofs);
 

@@ -3,9 +3,10 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
 #include <polyfrac/app/model_registry.h>
+#include <polyfrac/app/parameters.h>
+#include <polyfrac/discretization/level_discretization.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/physics/flow.h>

@@ -1,10 +1,11 @@
 #ifndef polyfrac_app_mechanics_models_h
 #define polyfrac_app_mechanics_models_h
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
 #include <polyfrac/app/model_registry.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/discretization/level_discretization.h>
 #include <polyfrac/physics/elasticity.h>
 #include <polyfrac/physics/mechanical_state.h>
 

@@ -9,6 +9,7 @@
 #include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/base/time_parameters.h>
 #include <polyfrac/contact/contact_parameters.h>
+#include <polyfrac/discretization/level_parameters.h>
 #include <polyfrac/fractures/fracture_parameters.h>
 #include <polyfrac/io/output_parameters.h>
 #include <polyfrac/mesh/mesh_parameters.h>
@@ -114,6 +115,11 @@ namespace PolyFrac
      * contact mechanics with Contact/Quasi-static time steps. */
     bool
     is_time_dependent() const;
+
+    /** What a LevelDiscretization of the scene is built from, with the
+     * memory check of check_memory(). */
+    LevelParameters
+    level_parameters() const;
 
     /** The registered model that Model/Model chooses. */
     const ModelRegistry::Description &

@@ -9,9 +9,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/parameters.h>
 #include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/discretization/level_discretization.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/physics/biot_coupling.h>

@@ -3,10 +3,11 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/model.h>
+#include <polyfrac/app/parameters.h>
 #include <polyfrac/app/poromechanical_newton.h>
 #include <polyfrac/contact/contact_mechanics.h>
+#include <polyfrac/discretization/level_discretization.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/physics/biot_coupling.h>

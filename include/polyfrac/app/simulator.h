@@ -3,11 +3,11 @@
 
 #include <deal.II/base/timer.h>
 
-#include <polyfrac/app/level_discretization.h>
 #include <polyfrac/app/mechanics_models.h>
 #include <polyfrac/app/model.h>
 #include <polyfrac/app/parameters.h>
 #include <polyfrac/app/time_stepping.h>
+#include <polyfrac/discretization/level_discretization.h>
 #include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/postprocessing/convergence_table.h>
 

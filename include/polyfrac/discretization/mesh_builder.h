@@ -1,10 +1,10 @@
-#ifndef polyfrac_app_mesh_builder_h
-#define polyfrac_app_mesh_builder_h
+#ifndef polyfrac_discretization_mesh_builder_h
+#define polyfrac_discretization_mesh_builder_h
 
 #include <deal.II/grid/tria.h>
 
-#include <polyfrac/app/parameters.h>
 #include <polyfrac/fractures/fracture_network.h>
+#include <polyfrac/mesh/mesh_parameters.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
 #include <vector>
@@ -14,7 +14,8 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * The mesh pipeline of one refinement level (doc/scheme.md §3-4, issue
+   * The mesh pipeline of one refinement level, driven by the subsection
+   * Mesh (MeshParameters, @p prm below) (doc/scheme.md §3-4, issue
    * "Foundation"): a deal.II triangulation (generated box or gmsh), refined
    * `Global refinements + level` times, then `Local refinements` times in
    * the local refinement box, then `Fracture refinements` times next to
@@ -33,14 +34,14 @@ namespace PolyFrac
     /** Generated box (colorized: ids 0/1 at x min/max, 2/3 y, 4/5 z). */
     template <int dim>
     void
-    make_box(const Parameters   &prm,
-             const unsigned int  level,
-             Triangulation<dim> &tria);
+    make_box(const MeshParameters &prm,
+             const unsigned int    level,
+             Triangulation<dim>   &tria);
 
     /** Refines the cells whose centre lies in the closed box. */
     template <int dim>
     void
-    refine_in_box(const Parameters &prm, Triangulation<dim> &tria);
+    refine_in_box(const MeshParameters &prm, Triangulation<dim> &tria);
 
     /**
      * Refines `Fracture refinements` times the cells that touch a fracture
@@ -51,7 +52,7 @@ namespace PolyFrac
      */
     template <int dim>
     void
-    refine_near_fractures(const Parameters                 &prm,
+    refine_near_fractures(const MeshParameters             &prm,
                           const std::vector<Fracture<dim>> &fractures,
                           Triangulation<dim>               &tria);
 
@@ -67,7 +68,7 @@ namespace PolyFrac
      */
     template <int dim>
     void
-    distort(const Parameters                 &prm,
+    distort(const MeshParameters             &prm,
             const std::vector<Fracture<dim>> &fractures,
             const std::vector<bool>          &fixed_vertices,
             PolytopalMesh<dim>               &mesh);
@@ -78,7 +79,7 @@ namespace PolyFrac
      */
     template <int dim>
     PolytopalMesh<dim>
-    agglomerate(const Parameters         &prm,
+    agglomerate(const MeshParameters     &prm,
                 const std::vector<bool>  &fracture_face,
                 const PolytopalMesh<dim> &mesh);
   } // namespace MeshBuilder

@@ -1,9 +1,8 @@
 #include <deal.II/grid/grid_refinement.h>
 
-#include <polyfrac/app/level_discretization.h>
-#include <polyfrac/app/memory_estimate.h>
-#include <polyfrac/app/mesh_builder.h>
 #include <polyfrac/base/mpi.h>
+#include <polyfrac/discretization/level_discretization.h>
+#include <polyfrac/discretization/mesh_builder.h>
 #include <polyfrac/mesh/gmsh_reader.h>
 
 #include <algorithm>
@@ -16,10 +15,10 @@ namespace PolyFrac
   {
     template <int dim>
     std::vector<Fracture<dim>>
-    fractures_from(const Parameters &prm)
+    fractures_from(const FractureParameters &prm)
     {
       std::vector<Fracture<dim>> fractures;
-      for (const auto &points3 : prm.fractures.geometries)
+      for (const auto &points3 : prm.geometries)
         {
           std::vector<Point<dim>> points;
           for (const Point<3> &p : points3)
@@ -73,9 +72,9 @@ namespace PolyFrac
 
 
   template <int dim>
-  LevelDiscretization<dim>::LevelDiscretization(const Parameters  &prm,
-                                                const unsigned int level,
-                                                const MPI_Comm     communicator)
+  LevelDiscretization<dim>::LevelDiscretization(const LevelParameters &prm,
+                                                const unsigned int     level,
+                                                const MPI_Comm communicator)
   {
     // The fractures are either planar Fracture objects located
     // geometrically (generated box) or the tagged elements of a gmsh mesh.
@@ -96,17 +95,17 @@ namespace PolyFrac
                     prm.mesh.global_refinements + level,
                     triangulation,
                     [&](const double n_cells) {
-                      check_memory(prm,
-                                   n_cells,
-                                   n_ranks_on_this_node(communicator),
-                                   n_mpi_ranks(communicator));
+                      if (prm.check_memory)
+                        prm.check_memory(n_cells,
+                                         n_ranks_on_this_node(communicator),
+                                         n_mpi_ranks(communicator));
                     }));
       }
     else
-      MeshBuilder::make_box(prm, level, triangulation);
-    MeshBuilder::refine_in_box(prm, triangulation);
-    MeshBuilder::refine_near_fractures(prm,
-                                       fractures_from<dim>(prm),
+      MeshBuilder::make_box(prm.mesh, level, triangulation);
+    MeshBuilder::refine_in_box(prm.mesh, triangulation);
+    MeshBuilder::refine_near_fractures(prm.mesh,
+                                       fractures_from<dim>(prm.fractures),
                                        triangulation);
     build_on_triangulation(prm,
                            communicator,
@@ -123,7 +122,7 @@ namespace PolyFrac
 
   template <int dim>
   LevelDiscretization<dim>::LevelDiscretization(
-    const Parameters          &prm,
+    const LevelParameters     &prm,
     const LevelDiscretization &coarser,
     const Vector<float>       &indicators)
     : gmsh_as_read(coarser.gmsh_as_read)
@@ -157,12 +156,13 @@ namespace PolyFrac
   template <int dim>
   void
   LevelDiscretization<dim>::build_on_triangulation(
-    const Parameters    &prm,
-    const MPI_Comm       communicator,
-    const GmshMesh<dim> &gmsh_elements)
+    const LevelParameters &prm,
+    const MPI_Comm         communicator,
+    const GmshMesh<dim>   &gmsh_elements)
   {
     const bool                       from_gmsh = gmsh_as_read != nullptr;
-    const std::vector<Fracture<dim>> fractures = fractures_from<dim>(prm);
+    const std::vector<Fracture<dim>> fractures =
+      fractures_from<dim>(prm.fractures);
     mesh = std::make_unique<PolytopalMesh<dim>>(
       PolytopalMesh<dim>::from_triangulation(triangulation));
 
@@ -171,7 +171,7 @@ namespace PolyFrac
     for (const auto &element : gmsh_elements.fracture_elements)
       for (const unsigned int v : element.vertices)
         fixed_vertices[v] = true;
-    MeshBuilder::distort(prm, fractures, fixed_vertices, *mesh);
+    MeshBuilder::distort(prm.mesh, fractures, fixed_vertices, *mesh);
 
     const auto make_network = [&](const MeshGeometry<dim> &mesh_geometry) {
       return from_gmsh ?
@@ -190,16 +190,12 @@ namespace PolyFrac
         for (const auto &ff : fine_network->fracture_faces)
           fracture_face[ff.face] = true;
         mesh = std::make_unique<PolytopalMesh<dim>>(
-          MeshBuilder::agglomerate(prm, fracture_face, *mesh));
+          MeshBuilder::agglomerate(prm.mesh, fracture_face, *mesh));
       }
 
     geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
     network  = make_network(*geometry);
-    dofs     = std::make_unique<DoFMap<dim>>(*mesh,
-                                         *network,
-                                         prm.contact.split_bubbles ?
-                                               BubblePlacement::split :
-                                               BubblePlacement::plus_side);
+    dofs = std::make_unique<DoFMap<dim>>(*mesh, *network, prm.bubble_placement);
     if (const unsigned int n_ranks = n_mpi_ranks(communicator); n_ranks > 1)
       dofs->distribute_among_ranks(communicator, mesh->partition(n_ranks));
   }

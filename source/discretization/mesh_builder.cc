@@ -7,7 +7,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
-#include <polyfrac/app/mesh_builder.h>
+#include <polyfrac/discretization/mesh_builder.h>
 #include <polyfrac/fractures/segment_distance.h>
 
 #include <algorithm>
@@ -139,20 +139,20 @@ namespace PolyFrac
 
     template <int dim>
     void
-    make_box(const Parameters   &prm,
-             const unsigned int  level,
-             Triangulation<dim> &tria)
+    make_box(const MeshParameters &prm,
+             const unsigned int    level,
+             Triangulation<dim>   &tria)
     {
       Point<dim>                lower, upper;
       std::vector<unsigned int> subdivisions(dim);
       for (unsigned int d = 0; d < dim; ++d)
         {
-          lower[d]        = prm.mesh.lower_left[d];
-          upper[d]        = prm.mesh.upper_right[d];
-          subdivisions[d] = prm.mesh.subdivisions[d];
+          lower[d]        = prm.lower_left[d];
+          upper[d]        = prm.upper_right[d];
+          subdivisions[d] = prm.subdivisions[d];
         }
-      const unsigned int n_refinements = prm.mesh.global_refinements + level;
-      if (prm.mesh.cell_type == CellType::simplex)
+      const unsigned int n_refinements = prm.global_refinements + level;
+      if (prm.cell_type == CellType::simplex)
         {
           // Simplex meshes cannot be refined by deal.II 9.4 without a
           // hypercube parent: subdivide instead.
@@ -184,19 +184,19 @@ namespace PolyFrac
 
     template <int dim>
     void
-    refine_in_box(const Parameters &prm, Triangulation<dim> &tria)
+    refine_in_box(const MeshParameters &prm, Triangulation<dim> &tria)
     {
-      if (prm.mesh.local_refinements == 0)
+      if (prm.local_refinements == 0)
         return;
-      for (unsigned int r = 0; r < prm.mesh.local_refinements; ++r)
+      for (unsigned int r = 0; r < prm.local_refinements; ++r)
         {
           for (const auto &cell : tria.active_cell_iterators())
             {
               const Point<dim> c      = cell->center();
               bool             inside = true;
               for (unsigned int d = 0; d < dim; ++d)
-                inside = inside && c[d] >= prm.mesh.box_lower[d] &&
-                         c[d] <= prm.mesh.box_upper[d];
+                inside = inside && c[d] >= prm.box_lower[d] &&
+                         c[d] <= prm.box_upper[d];
               if (inside)
                 cell->set_refine_flag();
             }
@@ -208,11 +208,11 @@ namespace PolyFrac
 
     template <int dim>
     void
-    refine_near_fractures(const Parameters                 &prm,
+    refine_near_fractures(const MeshParameters             &prm,
                           const std::vector<Fracture<dim>> &fractures,
                           Triangulation<dim>               &tria)
     {
-      for (unsigned int r = 0; r < prm.mesh.fracture_refinements; ++r)
+      for (unsigned int r = 0; r < prm.fracture_refinements; ++r)
         {
           std::vector<bool> on_fracture(tria.n_vertices(), false);
           for (const auto &face : tria.active_face_iterators())
@@ -240,12 +240,12 @@ namespace PolyFrac
 
     template <int dim>
     void
-    distort(const Parameters                 &prm,
+    distort(const MeshParameters             &prm,
             const std::vector<Fracture<dim>> &fractures,
             const std::vector<bool>          &fixed_vertices,
             PolytopalMesh<dim>               &mesh)
     {
-      if (prm.mesh.distortion == 0)
+      if (prm.distortion == 0)
         return;
       const unsigned int n_vertices = mesh.vertices.size();
 
@@ -268,9 +268,9 @@ namespace PolyFrac
       const auto [lower, upper] =
         BoundingBox<dim>(mesh.vertices).get_boundary_points();
 
-      std::mt19937                           generator(prm.mesh.random_seed);
+      std::mt19937                           generator(prm.random_seed);
       std::uniform_real_distribution<double> uniform(-1., 1.);
-      const double                           D     = prm.mesh.distortion;
+      const double                           D     = prm.distortion;
       std::vector<Point<dim>>                moved = mesh.vertices;
       // The smooth map bends within 1/4 of the shortest side of the box.
       double length = std::numeric_limits<double>::max();
@@ -280,7 +280,7 @@ namespace PolyFrac
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           Tensor<1, dim> shift;
-          if (prm.mesh.distortion_type == DistortionType::random)
+          if (prm.distortion_type == DistortionType::random)
             for (unsigned int d = 0; d < dim; ++d)
               shift[d] = D * h[v] * uniform(generator);
           else
@@ -313,12 +313,12 @@ namespace PolyFrac
 
     template <int dim>
     PolytopalMesh<dim>
-    agglomerate(const Parameters         &prm,
+    agglomerate(const MeshParameters     &prm,
                 const std::vector<bool>  &fracture_face,
                 const PolytopalMesh<dim> &mesh)
     {
       const unsigned int n_parts =
-        std::max(1u, mesh.n_cells() / prm.mesh.cells_per_polytope);
+        std::max(1u, mesh.n_cells() / prm.cells_per_polytope);
       DynamicSparsityPattern graph(mesh.n_cells());
       for (unsigned int f = 0; f < mesh.n_faces(); ++f)
         if (!mesh.faces[f].at_boundary() && !fracture_face[f])
@@ -336,37 +336,37 @@ namespace PolyFrac
 
 
     template void
-    make_box(const Parameters &, const unsigned int, Triangulation<2> &);
+    make_box(const MeshParameters &, const unsigned int, Triangulation<2> &);
     template void
-    make_box(const Parameters &, const unsigned int, Triangulation<3> &);
+    make_box(const MeshParameters &, const unsigned int, Triangulation<3> &);
     template void
-    refine_in_box(const Parameters &, Triangulation<2> &);
+    refine_in_box(const MeshParameters &, Triangulation<2> &);
     template void
-    refine_in_box(const Parameters &, Triangulation<3> &);
+    refine_in_box(const MeshParameters &, Triangulation<3> &);
     template void
-    refine_near_fractures(const Parameters &,
+    refine_near_fractures(const MeshParameters &,
                           const std::vector<Fracture<2>> &,
                           Triangulation<2> &);
     template void
-    refine_near_fractures(const Parameters &,
+    refine_near_fractures(const MeshParameters &,
                           const std::vector<Fracture<3>> &,
                           Triangulation<3> &);
     template void
-    distort(const Parameters &,
+    distort(const MeshParameters &,
             const std::vector<Fracture<2>> &,
             const std::vector<bool> &,
             PolytopalMesh<2> &);
     template void
-    distort(const Parameters &,
+    distort(const MeshParameters &,
             const std::vector<Fracture<3>> &,
             const std::vector<bool> &,
             PolytopalMesh<3> &);
     template PolytopalMesh<2>
-    agglomerate(const Parameters &,
+    agglomerate(const MeshParameters &,
                 const std::vector<bool> &,
                 const PolytopalMesh<2> &);
     template PolytopalMesh<3>
-    agglomerate(const Parameters &,
+    agglomerate(const MeshParameters &,
                 const std::vector<bool> &,
                 const PolytopalMesh<3> &);
   } // namespace MeshBuilder

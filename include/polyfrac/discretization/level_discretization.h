@@ -1,11 +1,11 @@
-#ifndef polyfrac_app_level_discretization_h
-#define polyfrac_app_level_discretization_h
+#ifndef polyfrac_discretization_level_discretization_h
+#define polyfrac_discretization_level_discretization_h
 
 #include <deal.II/grid/tria.h>
 
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/app/parameters.h>
+#include <polyfrac/discretization/level_parameters.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/gmsh_reader.h>
@@ -34,14 +34,14 @@ namespace PolyFrac
   class LevelDiscretization
   {
   public:
-    /** Builds the mesh of refinement level @p level of the scene of @p prm
-     * and everything on it, in the order of the members below. With more
-     * than one rank in @p communicator, every rank builds the whole level
-     * and its DoF map is distributed among them
+    /** Builds the mesh of refinement level @p level described by @p prm
+     * (Parameters::level_parameters()) and everything on it, in the order of
+     * the members below. With more than one rank in @p communicator, every rank
+     * builds the whole level and its DoF map is distributed among them
      * (DoFMap::distribute_among_ranks()). */
-    LevelDiscretization(const Parameters  &prm,
-                        const unsigned int level,
-                        const MPI_Comm     communicator = MPI_COMM_SELF);
+    LevelDiscretization(const LevelParameters &prm,
+                        const unsigned int     level,
+                        const MPI_Comm         communicator = MPI_COMM_SELF);
 
     /**
      * The next cycle of Mesh/Refinement = adaptive: a copy of the
@@ -54,7 +54,7 @@ namespace PolyFrac
      * fractures are located again, gmsh fracture elements followed through
      * the refinement. Its DoF map is distributed like that of @p coarser.
      */
-    LevelDiscretization(const Parameters          &prm,
+    LevelDiscretization(const LevelParameters     &prm,
                         const LevelDiscretization &coarser,
                         const Vector<float>       &indicators);
 
@@ -86,9 +86,9 @@ namespace PolyFrac
      * distributed among the ranks of @p communicator.
      */
     void
-    build_on_triangulation(const Parameters    &prm,
-                           const MPI_Comm       communicator,
-                           const GmshMesh<dim> &gmsh_elements);
+    build_on_triangulation(const LevelParameters &prm,
+                           const MPI_Comm         communicator,
+                           const GmshMesh<dim>   &gmsh_elements);
 
     /** The gmsh mesh as read (its fracture elements are the manifold ids of
      * #triangulation's fracture faces), shared by the adaptive cycles;
