@@ -171,9 +171,10 @@ namespace
   /**
    * A run that mpirun did not start is an Open MPI singleton, whose
    * MPI_Init probes the network transports (UCX, OFI) and starts a helper
-   * daemon: 0.37 s on the development machine, a quarter of a small
-   * scene's wall time. Such a run has one rank, so shared memory and self
-   * are all it can use: ask for those and no daemon, 0.04 s. Settings in
+   * daemon, a quarter of a small scene's wall time
+   * (benchmarks/README.md, "Measured choices in the code"). Such a run has one
+   * rank, so shared memory and self are all it can use: ask for those and
+   * no daemon. Settings in
    * the environment win; under mpirun (OMPI_COMM_WORLD_SIZE set) and with
    * other MPI libraries nothing changes.
    */

@@ -422,12 +422,12 @@ namespace PolyFrac
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
         entry->value() *= scaling(i) * scaling(entry->column());
-    // MUMPS (nested-dissection ordering): on B6's 17k tetrahedra, 79k
-    // unknowns, 13 s per factorisation against UMFPACK's 80 s. MUMPS may
-    // fail where UMFPACK does not: its workspace, estimated before the
-    // pivots, can be too small once delayed pivots fill in more (INFO(1) =
-    // −9, met on B6); UMFPACK then factorises this Jacobian.
-    // The solver refers to the matrix it factorised: it goes first.
+    // MUMPS (nested-dissection ordering) factorises B6's Jacobian about six
+    // times faster than UMFPACK (benchmarks/README.md, "Measured choices in the
+    // code"). MUMPS may fail where UMFPACK does not: its workspace, estimated
+    // before the pivots, can be too small once delayed pivots fill in more
+    // (INFO(1) = −9, met on B6); UMFPACK then factorises this Jacobian. The
+    // solver refers to the matrix it factorised: it goes first.
     direct.reset();
     fallback.reset();
     factorised_jacobian.clear();

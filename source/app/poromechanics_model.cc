@@ -191,9 +191,8 @@ namespace PolyFrac
                            obstacle +
                            " yet: set it to fixed-stress or automatic."));
     // With fractures the Newton step is solved by a direct solver only
-    // (MUMPS: 13 s per factorisation on B6's 17k tetrahedra, 79k
-    // unknowns), so Linear solver/Method = AMG keeps the fixed-stress split
-    // (doc/scheme.md §10).
+    // (MUMPS, benchmarks/README.md, "Measured choices in the code"), so Linear
+    // solver/Method = AMG keeps the fixed-stress split (doc/scheme.md §10).
     return scheme == Scheme::monolithic ||
            (scheme == Scheme::automatic && obstacle.empty() &&
             (!fractured || prm.solver.method == SolverMethod::direct));

@@ -8,22 +8,22 @@ namespace PolyFrac
   LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    prm.declare_entry("Method",
-                      "automatic",
-                      Patterns::Selection("automatic|" +
-                                          selection_pattern<SolverMethod>()),
-                      "automatic: direct for a level of at most 100,000 "
-                      "node sides (nodal unknowns over the dimension) in 2D "
-                      "or 2,000 in 3D, AMG above (measured on elasticity, "
-                      "parameters.h); each level says its choice on its "
-                      "first line. "
-                      "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
-                      "(smoothed aggregation with the rigid-body modes) for "
-                      "elasticity, and for the symmetric condensed contact "
-                      "steps together with an exact solve on the fracture "
-                      "faces' unknowns (one AMG per level); GMRES with plain "
-                      "aggregation and the translations for the condensed "
-                      "Coulomb slip steps.");
+    prm.declare_entry(
+      "Method",
+      "automatic",
+      Patterns::Selection("automatic|" + selection_pattern<SolverMethod>()),
+      "automatic: direct for a level of at most 100,000 "
+      "node sides (nodal unknowns over the dimension) in 2D "
+      "or 2,000 in 3D, AMG above (measured on elasticity, "
+      "benchmarks/README.md); each level says its choice on its "
+      "first line. "
+      "direct: UMFPACK. AMG: CG preconditioned by Trilinos ML "
+      "(smoothed aggregation with the rigid-body modes) for "
+      "elasticity, and for the symmetric condensed contact "
+      "steps together with an exact solve on the fracture "
+      "faces' unknowns (one AMG per level); GMRES with plain "
+      "aggregation and the translations for the condensed "
+      "Coulomb slip steps.");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0),

@@ -219,9 +219,10 @@ namespace PolyFrac
    * thread-safe, but every evaluation looks its parser up in a
    * ThreadLocalStorage under one shared mutex; threads evaluating the same
    * FunctionParser at every quadrature point then contend for that mutex
-   * (measured: the error integrals took 2.2 times as long on two threads
-   * as on one). A copy of this object holds no function until get() is
-   * called on it, so each thread makes and evaluates its own.
+   * (the error integrals became slower on two threads than on one:
+   * benchmarks/README.md, "Measured choices in the code"). A copy of this
+   * object holds no function until get() is called on it, so each thread makes
+   * and evaluates its own.
    */
   template <int dim>
   class PerThreadFunction

@@ -91,15 +91,12 @@ namespace PolyFrac
     /**
      * Method = automatic: the largest number of node sides (the nodal
      * displacement unknowns over dim) of a level solved by the direct
-     * solver, [dim − 2]; larger levels are solved by AMG. Elasticity, one
-     * level of the B2 boxes (2026-11-27, Release, idle machine), direct
-     * against AMG: 2D 128² 0.88 / 0.80 s, 256² 3.6 / 2.9 s, 512² 26 /
-     * 10.5 s; 3D 8³ (729 nodes) 0.42 / 0.49 s, 12³ (2,197 nodes) 0.70 /
-     * 0.51 s, 24³ 27 / 2.4 s; agglomerated 3D levels of 1,000–2,000
-     * polytopes (about 10,000 unknowns) 8–10 s against 1–2 s. In 2D the
-     * direct solver also carries the monolithic Newton of poromechanics
-     * (AMG keeps the fixed-stress split), so it stays the choice up to
-     * 100,000 node sides.
+     * solver, [dim − 2]; larger levels are solved by AMG: where AMG
+     * became the quicker one on elasticity (measured in
+     * benchmarks/README.md, "Measured choices in the code"). In 2D the direct
+     * solver also carries the monolithic Newton of poromechanics (AMG keeps
+     * the fixed-stress split), so it stays the choice up to 100,000 node
+     * sides.
      */
     static constexpr double largest_direct_level[2] = {1e5, 2e3};
     /**
