@@ -24,12 +24,6 @@ namespace PolyFrac
 {
   namespace
   {
-    /** The directory of @p file_name ("" for a file in the current one). */
-    std::string
-    directory_of(const std::string &file_name)
-    {
-      return std::filesystem::path(file_name).parent_path().string();
-    }
 
     /**
      * Throws unless @p path is a readable text file: @p what names it ("The
@@ -209,7 +203,7 @@ namespace PolyFrac
     std::vector<std::string> chain;
     const unsigned int       dim =
       scan(file_name,
-           directory_of(file_name),
+           ParameterParsing::directory_of(file_name),
            "The parameter file",
            "a relative path starts in the current directory",
            chain);
@@ -287,14 +281,15 @@ namespace PolyFrac
     file_name = name;
     std::vector<std::string> chain;
     scan(file_name,
-         directory_of(file_name),
+         ParameterParsing::directory_of(file_name),
          "The parameter file",
          "a relative path starts in the current directory",
          chain);
     try
       {
         std::ifstream          in(file_name);
-        const WorkingDirectory includes_from(directory_of(file_name));
+        const WorkingDirectory includes_from(
+          ParameterParsing::directory_of(file_name));
         prm->parse_input(in, file_name);
       }
     catch (const ExceptionBase &e)

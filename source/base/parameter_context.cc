@@ -22,7 +22,7 @@ namespace PolyFrac
   std::string
   ParameterContext::directory() const
   {
-    return std::filesystem::path(file_name).parent_path().string();
+    return ParameterParsing::directory_of(file_name);
   }
 
 
@@ -199,6 +199,14 @@ namespace PolyFrac
         {
           return -1;
         }
+    }
+
+
+
+    std::string
+    directory_of(const std::string &file_name)
+    {
+      return std::filesystem::path(file_name).parent_path().string();
     }
 
 

@@ -176,6 +176,10 @@ namespace PolyFrac
     double
     auto_or_number(ParameterHandler &prm, const std::string &entry);
 
+    /** The directory of @p file_name ("" for a file in the current one). */
+    std::string
+    directory_of(const std::string &file_name);
+
     /** @p path taken from @p directory if it is relative (the rule for
      * every path of a parameter file), then written relative to the
      * current directory, so that printed paths do not depend on where the
