@@ -767,6 +767,8 @@ namespace PolyFrac
     // The entries that the components' own choices leave unused.
     if (uses("Contact/Friction law"))
       warn_unused(contact.unused_entries());
+    if (uses("Flow/Aperture law"))
+      warn_unused(flow.unused_entries());
     warn_unused(mesh.unused_entries());
     // The corners also give the box of an analytic solution.
     if (mesh.source == MeshSource::gmsh &&

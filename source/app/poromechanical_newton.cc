@@ -118,9 +118,10 @@ namespace PolyFrac
                                pattern.add(row, p_K);
                                pattern.add(p_K, row);
                              });
-    // The fracture pressure's load and the fracture volume (J, both ways);
-    // the aperture in the cubic law couples the face's flow unknowns (the
-    // face and its edges) with the dofs of its jump.
+    // The fracture pressure's load (J) and the aperture, which couples the
+    // face's flow unknowns (the face and its edges: volume, storage and
+    // cubic law) with the dofs of its jump and, if the aperture law says
+    // so, its multipliers (explicit zeros there change MUMPS' pivoting).
     const auto &J = coupling.normal_jump_matrix();
     for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
       {
@@ -132,6 +133,10 @@ namespace PolyFrac
             for (const types::global_dof_index row : local)
               pattern.add(p0 + row, entry->column());
           }
+        if (flow.aperture_law().depends_on_traction())
+          for (unsigned int d = 0; d < dim; ++d)
+            for (const types::global_dof_index row : local)
+              pattern.add(p0 + row, dofs.multiplier_dof(i, d));
       }
     DynamicSparsityPattern flow_pattern(n_p);
     flow.make_pattern(flow_pattern);
@@ -195,8 +200,7 @@ namespace PolyFrac
                                jacobian.add(row, p_K, -b * value);
                                jacobian.add(p_K, row, -b * value);
                              });
-    // Momentum: +Jᵀ p_f; fracture mass: −Δt |σ| (d − d^{n−1})/Δt with
-    // d = d_0 − (J u)_σ/|σ|, i.e. +J u.
+    // Momentum: +Jᵀ p_f (the fracture volume: add_aperture_derivatives()).
     const auto &J = coupling.normal_jump_matrix();
     for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
       {
@@ -205,10 +209,7 @@ namespace PolyFrac
         const types::global_dof_index p_f =
           p0 + pressure_dofs.fracture_face_dof(i);
         for (auto entry = J.begin(i); entry != J.end(i); ++entry)
-          {
-            jacobian.add(entry->column(), p_f, entry->value());
-            jacobian.add(p_f, entry->column(), entry->value());
-          }
+          jacobian.add(entry->column(), p_f, entry->value());
       }
   }
 
@@ -217,27 +218,60 @@ namespace PolyFrac
   template <int dim>
   void
   PoromechanicalNewton<dim>::add_aperture_derivatives(
-    const FlowStepData   &data,
-    const Vector<double> &p_before,
-    const Vector<double> &p)
+    const FlowStepData                 &data,
+    const Vector<double>               &p_before,
+    const Vector<double>               &p,
+    const Vector<double>               &u,
+    const std::vector<FaceDeformation> &states)
   {
-    // −Δt ∂(H p − h)_a/∂d_σ ∂d_σ/∂u, ∂d_σ/∂u = −J_σ/|σ|.
-    const types::global_dof_index        p0 = n_u + n_lambda + n_s;
-    const auto                          &J  = coupling.normal_jump_matrix();
+    // The rows of face σ hold −|σ| (d − d^{n−1}) (its volume, on p_{f,σ})
+    // and −Δt (H p − h)(d) (cubic law and storage); d depends on the jump
+    // [[u]] = (jump matrix) u/|σ| through [[u]]_n and |[[u]]_τ|, and on
+    // λ_n = λ·n^+.
+    const types::global_dof_index        p0    = n_u + n_lambda + n_s;
+    const auto                          &jump  = coupling.jump_matrix();
+    const std::vector<Tensor<1, dim>>    jumps = coupling.jumps(u);
+    const ApertureLaw<dim>              &law   = flow.aperture_law();
     std::vector<types::global_dof_index> local;
     for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
       {
         if (!pressure_dofs.is_locally_owned_fracture_face(i))
           continue;
-        const std::vector<double> derivative =
+        std::vector<double> rows =
           flow.aperture_derivative(i, data, p_before, p, local);
-        const double scale = data.time_step / fracture_face_measure(i);
-        for (auto entry = J.begin(i); entry != J.end(i); ++entry)
-          for (unsigned int a = 0; a < local.size(); ++a)
-            if (derivative[a] != 0)
-              jacobian.add(p0 + local[a],
-                           entry->column(),
-                           scale * derivative[a] * entry->value());
+        const double measure = fracture_face_measure(i);
+        for (double &value : rows)
+          value *= -data.time_step;
+        rows[0] -= measure;
+        const FaceDeformation slopes = law.derivatives(i, states[i]);
+        const Tensor<1, dim> &n      = discretization.network->normal(i);
+        // ∂d/∂[[u]] and ∂d/∂λ (global components).
+        Tensor<1, dim> tangent = jumps[i] - states[i].normal_jump * n;
+        if (states[i].slip > 0)
+          tangent /= states[i].slip;
+        const Tensor<1, dim> by_jump =
+          slopes.normal_jump * n + slopes.slip * tangent;
+        const Tensor<1, dim> by_traction = slopes.normal_traction * n;
+        for (unsigned int a = 0; a < local.size(); ++a)
+          {
+            if (rows[a] == 0)
+              continue;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                if (by_jump[d] != 0)
+                  for (auto entry = jump.begin(dim * i + d);
+                       entry != jump.end(dim * i + d);
+                       ++entry)
+                    jacobian.add(p0 + local[a],
+                                 entry->column(),
+                                 rows[a] * by_jump[d] * entry->value() /
+                                   measure);
+                if (by_traction[d] != 0)
+                  jacobian.add(p0 + local[a],
+                               dofs.multiplier_dof(i, d),
+                               rows[a] * by_traction[d]);
+              }
+          }
       }
   }
 
@@ -316,9 +350,14 @@ namespace PolyFrac
         bubbles->add_stiffness(jacobian, s0, true);
       }
 
-    // Mass: the step's data at the apertures of u.
-    const std::vector<double> d =
-      coupling.apertures(u, prm.flow.aperture_at_contact);
+    // Mass: the step's data at the apertures of (u, λ).
+    std::vector<Tensor<1, dim>> lambda(dofs.n_bubbles());
+    for (unsigned int i = 0; i < lambda.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        lambda[i][d] = x(dofs.multiplier_dof(i, d));
+    const std::vector<FaceDeformation> face_states =
+      coupling.face_deformations(u, lambda);
+    const std::vector<double> d = flow.apertures(face_states);
     for (unsigned int i = 0; i < d.size(); ++i)
       {
         data.apertures[i]        = d[i];
@@ -350,7 +389,7 @@ namespace PolyFrac
         jacobian.add(row, column, -data.time_step * entry->value());
       });
     add_biot_couplings();
-    add_aperture_derivatives(data, start.pressures, p);
+    add_aperture_derivatives(data, start.pressures, p, u, face_states);
 
     // Momentum and contact (A, the faces, the Dirichlet rows), last: the
     // Dirichlet rows drop what the couplings put there.
@@ -545,7 +584,8 @@ namespace PolyFrac
       before,
       p_before,
       bubbles ? bubbles->loads() : Vector<double>(),
-      coupling.apertures(before.displacement, prm.flow.aperture_at_contact),
+      flow.apertures(
+        coupling.face_deformations(before.displacement, before.multipliers)),
       volume_changes(before.displacement, before.face_bubbles)};
 
     // The start: the guess, with the Dirichlet data and the prescribed

@@ -349,7 +349,8 @@ namespace PolyFrac
   std::vector<double>
   PoromechanicsModel<dim>::apertures(const MechanicalState<dim> &u) const
   {
-    return coupling.apertures(u.displacement, prm.flow.aperture_at_contact);
+    return flow.apertures(
+      coupling.face_deformations(u.displacement, u.multipliers));
   }
 
 
@@ -997,11 +998,13 @@ namespace PolyFrac
     const ModelRegistry::Registration<PoromechanicsModel> poromechanics(
       "poromechanics",
       "flow and mechanics coupled (Biot, the fracture pressure on the "
-      "fracture faces, the cubic law on d_0 - [u]_n), with frictional "
-      "contact on the fractures.",
+      "fracture faces, the cubic law on the aperture of Flow/Aperture law), "
+      "with frictional contact on the fractures.",
       [] {
         std::vector<std::string> entries = mechanics_entries();
-        for (const auto &list : {contact_entries(), flow_entries()})
+        for (const auto &list : {contact_entries(),
+                                 flow_entries(),
+                                 FlowParameters::aperture_law_entries()})
           entries.insert(entries.end(), list.begin(), list.end());
         for (const std::string entry :
              {"Flow/Biot coefficient",

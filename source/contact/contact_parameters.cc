@@ -3,21 +3,6 @@
 
 namespace PolyFrac
 {
-  namespace
-  {
-    /** The extensions of the subsection Contact (the friction laws). */
-    const std::vector<ParameterExtension> &
-    extensions()
-    {
-      static const std::vector<ParameterExtension> none;
-      const auto                                  &all = parameter_extensions();
-      const auto                                   found = all.find("Contact");
-      return found == all.end() ? none : found->second;
-    }
-  } // namespace
-
-
-
   void
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -64,8 +49,7 @@ namespace PolyFrac
       "weakening). A step without equilibrium is cut; where equilibrium "
       "ends on slip-weakening faces the run stops there with a "
       "'quasi-static instability' report. false: one static solve.");
-    for (const ParameterExtension &extension : extensions())
-      extension.declare(prm);
+    declare_parameter_extensions("Contact", prm);
     prm.leave_subsection();
   }
 
@@ -87,14 +71,7 @@ namespace PolyFrac
                            prm.get("Complementarity parameter") + ">."));
     n_load_steps       = prm.get_integer("Number of load steps");
     quasi_static_steps = prm.get_bool("Quasi-static time steps");
-    friction_law       = std::make_shared<ParameterHandler>();
-    for (const ParameterExtension &extension : extensions())
-      {
-        extension.check(prm, context);
-        extension.declare(*friction_law);
-        for (const std::string &entry : extension.entries())
-          friction_law->set(entry, prm.get(entry));
-      }
+    friction_law       = parse_parameter_extensions("Contact", prm, context);
     prm.leave_subsection();
   }
 
@@ -103,11 +80,7 @@ namespace PolyFrac
   std::vector<std::string>
   ContactParameters::friction_law_entries()
   {
-    std::vector<std::string> entries;
-    for (const ParameterExtension &extension : extensions())
-      for (const std::string &entry : extension.entries())
-        entries.push_back("Contact/" + entry);
-    return entries;
+    return parameter_extension_entries("Contact");
   }
 
 
@@ -115,11 +88,6 @@ namespace PolyFrac
   std::vector<UnusedEntry>
   ContactParameters::unused_entries() const
   {
-    std::vector<UnusedEntry> unused;
-    for (const ParameterExtension &extension : extensions())
-      for (const auto &[entry, choice] :
-           extension.unused_entries(*friction_law))
-        unused.emplace_back("Contact/" + entry, choice);
-    return unused;
+    return unused_parameter_extension_entries("Contact", *friction_law);
   }
 } // namespace PolyFrac

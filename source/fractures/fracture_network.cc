@@ -368,6 +368,18 @@ namespace PolyFrac
 
   template struct Fracture<2>;
   template struct Fracture<3>;
+  template <int dim>
+  std::vector<Point<dim>>
+  FractureNetwork<dim>::centroids(const MeshGeometry<dim> &geometry) const
+  {
+    std::vector<Point<dim>> points;
+    for (const FractureFace &fracture_face : fracture_faces)
+      points.push_back(geometry.faces[fracture_face.face].centroid);
+    return points;
+  }
+
+
+
   template class FractureNetwork<2>;
   template class FractureNetwork<3>;
 } // namespace PolyFrac

@@ -52,6 +52,13 @@ namespace PolyFrac
       }
     jump_pattern.copy_from(jump_dsp);
     normal_jump.reinit(jump_pattern);
+    DynamicSparsityPattern vector_jump_dsp(dim * n_faces, n_dofs);
+    for (unsigned int i = 0; i < n_faces; ++i)
+      for (const auto &[block, w] : jumps[i])
+        for (unsigned int d = 0; d < dim; ++d)
+          vector_jump_dsp.add(dim * i + d, dim * block + d);
+    vector_jump_pattern.copy_from(vector_jump_dsp);
+    vector_jump.reinit(vector_jump_pattern);
     for (unsigned int i = 0; i < n_faces; ++i)
       {
         const Tensor<1, dim> n = network.normal(i);
@@ -59,7 +66,10 @@ namespace PolyFrac
           geometry.faces[network.fracture_faces[i].face].measure;
         for (const auto &[block, w] : jumps[i])
           for (unsigned int d = 0; d < dim; ++d)
-            normal_jump.add(i, dim * block + d, measure * w * n[d]);
+            {
+              normal_jump.add(i, dim * block + d, measure * w * n[d]);
+              vector_jump.add(dim * i + d, dim * block + d, measure * w);
+            }
       }
   }
 
@@ -119,13 +129,41 @@ namespace PolyFrac
 
 
   template <int dim>
-  std::vector<double>
-  BiotCoupling<dim>::apertures(const Vector<double> &u, const double d_0) const
+  std::vector<Tensor<1, dim>>
+  BiotCoupling<dim>::jumps(const Vector<double> &u) const
   {
-    std::vector<double> d = normal_jumps(u);
-    for (double &value : d)
-      value = d_0 - value;
-    return d;
+    const unsigned int n_faces = network.n_fracture_faces();
+    if (n_faces == 0)
+      return {};
+    Vector<double> result(vector_jump.m());
+    vector_jump.vmult(result, u);
+    std::vector<Tensor<1, dim>> values(n_faces);
+    for (unsigned int i = 0; i < n_faces; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        values[i][d] = result(dim * i + d) /
+                       geometry.faces[network.fracture_faces[i].face].measure;
+    return values;
+  }
+
+
+
+  template <int dim>
+  std::vector<FaceDeformation>
+  BiotCoupling<dim>::face_deformations(
+    const Vector<double>              &u,
+    const std::vector<Tensor<1, dim>> &multipliers) const
+  {
+    const std::vector<Tensor<1, dim>> jump_values = jumps(u);
+    std::vector<FaceDeformation>      states(jump_values.size());
+    for (unsigned int i = 0; i < states.size(); ++i)
+      {
+        const Tensor<1, dim> &n = network.normal(i);
+        states[i].normal_jump   = jump_values[i] * n;
+        states[i].slip = (jump_values[i] - states[i].normal_jump * n).norm();
+        if (!multipliers.empty())
+          states[i].normal_traction = multipliers[i] * n;
+      }
+    return states;
   }
 
 

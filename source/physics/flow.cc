@@ -66,6 +66,9 @@ namespace PolyFrac
                                          prm.flux_expression,
                                          1,
                                          context.constants))
+    , law(ApertureLaws::Registry::create(*prm.aperture_law,
+                                         context,
+                                         network.centroids(geometry)))
   {
     const auto                  &mesh = geometry.mesh;
     std::set<types::boundary_id> mesh_ids;
@@ -143,12 +146,25 @@ namespace PolyFrac
     data.time_step = time_step;
     data.storage.assign(geometry.mesh.n_cells(), prm.inverse_biot_modulus);
     data.cell_rhs.assign(geometry.mesh.n_cells(), 0.);
-    data.fracture_storage.assign(network.n_fracture_faces(),
-                                 fracture_fluid_storage(
-                                   prm.aperture_at_contact));
+    data.apertures =
+      apertures(std::vector<FaceDeformation>(network.n_fracture_faces()));
+    for (const double d : data.apertures)
+      data.fracture_storage.push_back(fracture_fluid_storage(d));
     data.fracture_rhs.assign(network.n_fracture_faces(), 0.);
-    data.apertures.assign(network.n_fracture_faces(), prm.aperture_at_contact);
     return data;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Flow<dim>::apertures(const std::vector<FaceDeformation> &states) const
+  {
+    AssertDimension(states.size(), network.n_fracture_faces());
+    std::vector<double> d;
+    for (unsigned int i = 0; i < states.size(); ++i)
+      d.push_back(law->aperture(i, prm.aperture_at_contact, states[i]));
+    return d;
   }
 
 

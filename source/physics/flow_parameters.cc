@@ -1,3 +1,4 @@
+#include <polyfrac/base/parameter_extensions.h>
 #include <polyfrac/physics/flow_parameters.h>
 
 #include <cmath>
@@ -42,7 +43,8 @@ namespace PolyFrac
                       "1e-4",
                       Patterns::Double(),
                       "d_0 >= 0 (m): the hydraulic aperture of a closed "
-                      "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n).");
+                      "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n) "
+                      "with Aperture law = linear.");
     prm.declare_entry("Minimum fracture aperture",
                       "1e-5",
                       Patterns::Double(),
@@ -113,6 +115,7 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Outward volume flux per area on the Flux boundary ids, "
                       "an expression in x, y (, z), t.");
+    declare_parameter_extensions("Flow", prm);
     prm.declare_entry("HFV stabilisation",
                       "auto",
                       Patterns::Anything(),
@@ -238,6 +241,23 @@ namespace PolyFrac
                            "grows like max(alpha, 1/alpha)), not <" +
                            Utilities::trim(prm.get("HFV stabilisation")) +
                            ">."));
+    aperture_law = parse_parameter_extensions("Flow", prm, context);
     prm.leave_subsection();
+  }
+
+
+
+  std::vector<std::string>
+  FlowParameters::aperture_law_entries()
+  {
+    return parameter_extension_entries("Flow");
+  }
+
+
+
+  std::vector<UnusedEntry>
+  FlowParameters::unused_entries() const
+  {
+    return unused_parameter_extension_entries("Flow", *aperture_law);
   }
 } // namespace PolyFrac

@@ -88,7 +88,38 @@ namespace PolyFrac
     EnergyTerms terms;
     add_mechanics(before, after, p_after, friction, terms);
     add_flow(p_before, p_after, data, terms);
+    add_aperture_law(before, after, p_after, terms);
     return terms;
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::add_aperture_law(const MechanicalState<dim> &before,
+                                       const MechanicalState<dim> &after,
+                                       const Vector<double>       &p_after,
+                                       EnergyTerms                &terms) const
+  {
+    // The fracture mass balance holds |σ| (d^n − d^{n−1}); the pressure
+    // load of the momentum equation works on the opening −[[u]]_n alone.
+    const auto state_of = [&](const MechanicalState<dim> &state) {
+      return coupling.face_deformations(state.displacement, state.multipliers);
+    };
+    const std::vector<FaceDeformation> states_0 = state_of(before),
+                                       states_1 = state_of(after);
+    const std::vector<double> d_0               = flow.apertures(states_0),
+                              d_1               = flow.apertures(states_1);
+    double work                                 = 0;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      {
+        const double beyond_opening =
+          (d_1[i] - d_0[i]) +
+          (states_1[i].normal_jump - states_0[i].normal_jump);
+        work -= geometry.faces[network.fracture_faces[i].face].measure *
+                p_after(pressure_dofs.fracture_face_dof(i)) * beyond_opening;
+      }
+    terms.work.emplace_back("aperture law, beyond the opening", work);
   }
 
 

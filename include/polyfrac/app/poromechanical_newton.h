@@ -40,14 +40,16 @@ namespace PolyFrac
    * - bubbles: A_su u + A_ss s − F_s − b D_sᵀ p_m;
    * - mass, scaled by −Δt as in BiotSystem: −b D (u − u^{n−1}) − b D_s (s −
    *   s^{n−1}) − Δt (H(d) p − h(d)) in the cells, with H, h the HFV step
-   *   (Flow::assemble()) at the apertures d = d_0 − [[u]]_n of x, the
+   *   (Flow::assemble()) at the apertures d of x (Flow/Aperture law: d_0 −
+   *   [[u]]_n by default, or also of |[[u]]_τ| and λ_n), the
    *   fracture storage max(d, d_min) c_f and, on each fracture face, the
    *   volume change |σ| (d − d^{n−1})/Δt.
    *
    * Each iteration assembles the generalised Jacobian of all rows: the
    * contact states (ContactMechanics::linearise()), the Biot couplings D,
-   * D_s, J, and the aperture in the cubic law and the fracture storage
-   * (Flow::aperture_derivative()), so that the iteration converges
+   * D_s, J, and the aperture in the fracture volume, the cubic law and the
+   * fracture storage (Flow::aperture_derivative(),
+   * ApertureLaw::derivatives()), so that the iteration converges
    * quadratically once the contact states settle; it is solved by MUMPS
    * (Trilinos' Amesos) after the symmetric diagonal scaling of
    * BiotSystem. The iteration stops when the contact states did not
@@ -203,12 +205,16 @@ namespace PolyFrac
     void
     add_biot_couplings();
 
-    /** Adds −Δt ∂(H p − h)/∂d ∂d/∂u on the fracture faces' flow rows
-     * (cubic law and storage) at @p x. */
+    /** Adds the derivatives of the fracture faces' flow rows (volume,
+     * cubic law and storage) in their aperture, times those of the
+     * aperture law in the displacement @p u and the multipliers, at the
+     * face states @p states of (@p u, λ) and the pressures @p p. */
     void
-    add_aperture_derivatives(const FlowStepData   &data,
-                             const Vector<double> &p_before,
-                             const Vector<double> &p);
+    add_aperture_derivatives(const FlowStepData                 &data,
+                             const Vector<double>               &p_before,
+                             const Vector<double>               &p,
+                             const Vector<double>               &u,
+                             const std::vector<FaceDeformation> &states);
 
     /** The ranks of the unknowns (MPI_COMM_SELF on one rank). */
     MPI_Comm

@@ -33,9 +33,10 @@ namespace PolyFrac
    * mechanics with Biot coupling and, on the fractures, contact with
    * friction and the fracture pressure, coupled to the HFV flow in the
    * matrix and the fractures, by implicit Euler steps. Porosity
-   * φ = φ^0 + b div(u − u^0) + (p_m − p_m^0)/M, aperture d_f = d_0 − [u]_n in
-   * the cubic law, with the same discrete divergence and jump as the
-   * momentum equation (BiotCoupling).
+   * φ = φ^0 + b div(u − u^0) + (p_m − p_m^0)/M, aperture d_f of
+   * Flow/Aperture law (d_0 − [u]_n by default) in the cubic law, the
+   * fracture storage and volume, with the same discrete divergence and
+   * jump as the momentum equation (BiotCoupling).
    *
    * Without fractures on one rank (Nonlinear solver/Coupling scheme =
    * automatic or monolithic), each step is one symmetric saddle-point solve
@@ -316,7 +317,8 @@ namespace PolyFrac
                       const MechanicalState<dim> &u_new,
                       const Vector<double>       &p_new);
 
-    /** The apertures d_0 − [[u]]_n of @p u per fracture face. */
+    /** The apertures of the aperture law in the state @p u per fracture
+     * face (d_0 − [[u]]_n with the default law). */
     std::vector<double>
     apertures(const MechanicalState<dim> &u) const;
 

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,10 +52,35 @@ namespace PolyFrac
   add_parameter_extension(const std::string        &subsection,
                           const ParameterExtension &extension);
 
-  /** The extensions by subsection, each list in the order they were
-   * added. */
-  const std::map<std::string, std::vector<ParameterExtension>> &
-  parameter_extensions();
+  /** Declares the extensions of the subsection @p subsection in @p prm
+   * (the subsection entered). */
+  void
+  declare_parameter_extensions(const std::string &subsection,
+                               ParameterHandler  &prm);
+
+  /**
+   * Checks the extensions of the subsection @p subsection in @p prm (the
+   * subsection entered) and returns their entries with the values of
+   * @p prm, declared at the top level of a handler of their own: what the
+   * components behind the extensions read later (e.g. the chosen friction
+   * law's coefficients).
+   */
+  std::shared_ptr<ParameterHandler>
+  parse_parameter_extensions(const std::string      &subsection,
+                             ParameterHandler       &prm,
+                             const ParameterContext &context);
+
+  /** The entries the extensions of @p subsection add, as
+   * "Subsection/Entry". */
+  std::vector<std::string>
+  parameter_extension_entries(const std::string &subsection);
+
+  /** The entries of the extensions of @p subsection that the choices in
+   * @p values (as parse_parameter_extensions() returns them) leave
+   * unused, as "Subsection/Entry", each with the choice. */
+  std::vector<UnusedEntry>
+  unused_parameter_extension_entries(const std::string &subsection,
+                                     ParameterHandler  &values);
 } // namespace PolyFrac
 
 #endif

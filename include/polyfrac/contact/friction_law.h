@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
-#include <polyfrac/base/parameter_extensions.h>
+#include <polyfrac/base/law_registry.h>
 #include <polyfrac/contact/contact_parameters.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
@@ -32,9 +32,10 @@ namespace PolyFrac
    * call the law; no one branches on its name.
    *
    * A law is one file in source/contact/friction_laws/: its class and its
-   * FrictionLaws::Registration, which gives the law's name (a value of
-   * Contact/Friction law), its description, its entries of the subsection
-   * Contact and how to declare them. Its constructor reads and checks them.
+   * FrictionLaws::Registration (LawRegistry), which gives the law's name (a
+   * value of Contact/Friction law), its description, its entries of the
+   * subsection Contact and how to declare them. Its constructor reads and
+   * checks them.
    */
   template <int dim>
   class FrictionLaw
@@ -94,77 +95,35 @@ namespace PolyFrac
 
 
 
+  /** Friction laws are chosen by Contact/Friction law (default Coulomb). */
+  template <>
+  struct LawChoice<FrictionLaw>
+  {
+    /** The subsection of the choice. */
+    static constexpr const char *subsection = "Contact";
+    /** The choosing entry. */
+    static constexpr const char *entry = "Friction law";
+    /** Its default. */
+    static constexpr const char *default_law = "Coulomb";
+    /** The first sentence of its documentation. */
+    static constexpr const char *documentation =
+      "Friction on the fracture faces.";
+  };
+
+
+
   /**
    * The friction laws that registered themselves, and the entry
    * Contact/Friction law that chooses one of them.
    */
   namespace FrictionLaws
   {
-    /**
-     * A law's factory: the law for the fracture faces with the centroids
-     * @p centroids (none: only read and check the entries), reading its
-     * entries from @p prm in the subsection Contact (entered); throws,
-     * naming the file of @p context and the entry, on a wrong value.
-     */
-    template <int dim>
-    using Factory = std::function<std::unique_ptr<FrictionLaw<dim>>(
-      ParameterHandler              &prm,
-      const ParameterContext        &context,
-      const std::vector<Point<dim>> &centroids)>;
+    /** The registry of the friction laws. */
+    using Registry = LawRegistry<FrictionLaw>;
 
-    /** What a law registers (see Registration). */
-    struct Law
-    {
-      /** Its value of Contact/Friction law. */
-      std::string name;
-      /** One sentence for the entry's documentation. */
-      std::string description;
-      /** The entries of the subsection Contact it reads. */
-      std::vector<std::string> entries;
-      /** Declares the entries it owns (an entry is owned by one law; others
-       * may read it). */
-      std::function<void(ParameterHandler &)> declare;
-      /** The factory in 2D. */
-      Factory<2> create_2d;
-      /** The factory in 3D. */
-      Factory<3> create_3d;
-    };
-
-    /** Adds @p law to the laws of Contact/Friction law. */
-    void
-    register_law(const Law &law);
-
-    /**
-     * Registers the law `LawClass<dim>`, constructed as `LawClass<dim>(prm,
-     * context, centroids)` (see Factory): a static object of this type in
-     * the law's file is its registration line.
-     */
+    /** A friction law's registration line (LawRegistry::Registration). */
     template <template <int> class LawClass>
-    struct Registration
-    {
-      /** Registers LawClass under @p name (see Law for the arguments). */
-      Registration(const std::string                             &name,
-                   const std::string                             &description,
-                   const std::vector<std::string>                &entries,
-                   const std::function<void(ParameterHandler &)> &declare)
-      {
-        register_law(
-          {name,
-           description,
-           entries,
-           declare,
-           [](ParameterHandler            &prm,
-              const ParameterContext      &context,
-              const std::vector<Point<2>> &centroids) {
-             return std::make_unique<LawClass<2>>(prm, context, centroids);
-           },
-           [](ParameterHandler            &prm,
-              const ParameterContext      &context,
-              const std::vector<Point<3>> &centroids) {
-             return std::make_unique<LawClass<3>>(prm, context, centroids);
-           }});
-      }
-    };
+    using Registration = Registry::Registration<LawClass>;
 
     /** The law that Contact/Friction law of @p prm chooses, for the
      * fracture faces with the centroids @p centroids; @p context gives the
@@ -173,7 +132,10 @@ namespace PolyFrac
     std::unique_ptr<FrictionLaw<dim>>
     create(const ContactParameters       &prm,
            const ParameterContext        &context,
-           const std::vector<Point<dim>> &centroids);
+           const std::vector<Point<dim>> &centroids)
+    {
+      return Registry::create(*prm.friction_law, context, centroids);
+    }
 
     /** The law that Contact/Friction law of @p prm chooses, for the
      * fracture faces of @p network. */
@@ -182,7 +144,10 @@ namespace PolyFrac
     create(const ContactParameters    &prm,
            const ParameterContext     &context,
            const MeshGeometry<dim>    &geometry,
-           const FractureNetwork<dim> &network);
+           const FractureNetwork<dim> &network)
+    {
+      return create(prm, context, network.centroids(geometry));
+    }
   } // namespace FrictionLaws
 } // namespace PolyFrac
 

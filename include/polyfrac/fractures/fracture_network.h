@@ -135,6 +135,12 @@ namespace PolyFrac
     Tensor<2, dim>
     frame(const unsigned int i) const;
 
+    /** The centroids of the fracture faces, in their order (the points
+     * where per-face data such as the friction and aperture laws'
+     * expressions are evaluated). */
+    std::vector<Point<dim>>
+    centroids(const MeshGeometry<dim> &geometry) const;
+
     /** Number of fractures. */
     unsigned int
     n_fractures() const

@@ -8,6 +8,7 @@
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
+#include <polyfrac/physics/aperture_law.h>
 
 #include <vector>
 
@@ -23,7 +24,9 @@ namespace PolyFrac
    *
    * - D (one row per cell): (D u)_K = |K| div_K u, with div_K = tr ∇^K (the
    *   bubbles of the + cells included);
-   * - J (one row per fracture face): (J u)_σ = |σ| [[u]]_σ·n^+.
+   * - J (one row per fracture face): (J u)_σ = |σ| [[u]]_σ·n^+;
+   * - and the whole jump (dim rows per fracture face): |σ| [[u]]_σ, for
+   *   the aperture laws that depend on the slip.
    *
    * The momentum equation's pressure load is b Dᵀ p_m − Jᵀ p_f (the Biot
    * term and the fracture pressure moved to the right-hand side); the
@@ -59,11 +62,18 @@ namespace PolyFrac
     std::vector<double>
     normal_jumps(const Vector<double> &u) const;
 
-    /** The apertures d = d_0 − [[u]]_σ·n^+ per fracture face, for the
-     * displacement @p u and the aperture at contact @p d_0
-     * (Flow/Aperture at contact). */
-    std::vector<double>
-    apertures(const Vector<double> &u, const double d_0) const;
+    /** [[u]]_σ per fracture face (global components), for the
+     * displacement @p u. */
+    std::vector<Tensor<1, dim>>
+    jumps(const Vector<double> &u) const;
+
+    /** The normal jump, slip |[[u]]_τ| and normal traction λ_σ·n^+ of
+     * each fracture face (the arguments of an ApertureLaw), for the
+     * displacement @p u and the face tractions @p multipliers (global
+     * components; empty: none). */
+    std::vector<FaceDeformation>
+    face_deformations(const Vector<double>              &u,
+                      const std::vector<Tensor<1, dim>> &multipliers) const;
 
     /** D: (D u)_K = |K| div_K u, one row per cell. */
     const SparseMatrix<double> &
@@ -80,14 +90,24 @@ namespace PolyFrac
       return normal_jump;
     }
 
+    /** The jump, row dim σ + d: |σ| [[u]]_σ·e_d (empty without fracture
+     * faces). */
+    const SparseMatrix<double> &
+    jump_matrix() const
+    {
+      return vector_jump;
+    }
+
   private:
     const MeshGeometry<dim>    &geometry;
     const FractureNetwork<dim> &network;
-    SparsityPattern             divergence_pattern, jump_pattern;
+    SparsityPattern divergence_pattern, jump_pattern, vector_jump_pattern;
     /** D: |K| div_K. */
     SparseMatrix<double> divergence;
     /** J: |σ| [[·]]_σ·n^+. */
     SparseMatrix<double> normal_jump;
+    /** |σ| [[·]]_σ, dim rows per face. */
+    SparseMatrix<double> vector_jump;
   };
 } // namespace PolyFrac
 

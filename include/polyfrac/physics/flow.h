@@ -15,6 +15,7 @@
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
+#include <polyfrac/physics/aperture_law.h>
 #include <polyfrac/physics/flow_parameters.h>
 
 #include <memory>
@@ -29,12 +30,13 @@ namespace PolyFrac
    * The coefficients of one implicit Euler step t^{n−1} → t^n of Flow that
    * the model chooses, one entry per cell or per fracture face:
    * - Model = flow: c_K = 1/M (Flow/Inverse Biot modulus), a_σ = the fluid
-   *   storage max(d_0, d_min) c_f, r = 0 and the aperture d_0
-   *   (Flow::flow_step_data());
+   *   storage max(d, d_min) c_f, r = 0 and the aperture d of the face at
+   *   rest (d_0 for every aperture law; Flow::flow_step_data());
    * - fixed-stress poromechanics: c_K = 1/M + L, r_K = −b div_K(u^k −
    *   u^{n−1})/Δt + L p_K^k/Δt, a_σ = the fracture relaxation plus the
    *   fluid storage max(d^k, d_min) c_f, r_σ = −(d^k −
-   *   d^{n−1})/Δt, d_σ = d_0 − [[u^k]]_{σ,n}.
+   *   d^{n−1})/Δt, d_σ the aperture law's (Flow::apertures()) at the
+   *   state k (d_0 − [[u^k]]_{σ,n} with the default law).
    */
   struct FlowStepData
   {
@@ -140,9 +142,21 @@ namespace PolyFrac
 
     /** The step data of Model = flow at @p time with step @p time_step:
      * c_K = 1/M, a_σ = max(d_0, d_min) c_f, no extra sources, apertures
-     * d_0. */
+     * d_0 (the aperture law's at rest). */
     FlowStepData
     flow_step_data(const double time, const double time_step) const;
+
+    /** The aperture law (Flow/Aperture law) of the fracture faces. */
+    const ApertureLaw<dim> &
+    aperture_law() const
+    {
+      return *law;
+    }
+
+    /** The apertures d_σ of the aperture law (before the floor d_min) of
+     * the fracture faces in the states @p states, one per face. */
+    std::vector<double>
+    apertures(const std::vector<FaceDeformation> &states) const;
 
     /** Flow/Initial pressure at the cell, face, fracture face and edge
      * centroids. */
@@ -354,6 +368,8 @@ namespace PolyFrac
     /** Sources and boundary data. */
     std::unique_ptr<Expression<dim>> matrix_source, fracture_source,
       boundary_pressure, boundary_flux;
+    /** The aperture law. */
+    std::unique_ptr<const ApertureLaw<dim>> law;
   };
 } // namespace PolyFrac
 

@@ -5,6 +5,7 @@
 
 #include <polyfrac/base/parameter_context.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ namespace PolyFrac
    * The subsection Flow (doc/scheme.md §1, §7): Darcy flow in the matrix,
    * Poiseuille flow (cubic law) in the fractures, exchange through a normal
    * transmissibility, the Biot data. Expressions are in x, y (, z) and t.
+   * The aperture laws add their own entries to it (ApertureLaws::Registry,
+   * a ParameterExtension); these are declared and checked here with the
+   * rest, and kept for Flow, which creates the chosen law.
    */
   struct FlowParameters
   {
@@ -27,6 +31,16 @@ namespace PolyFrac
      * the entry. */
     void
     parse_parameters(ParameterHandler &prm, const ParameterContext &context);
+
+    /** The entries that the aperture laws add (Flow/Aperture law and the
+     * laws' own), all of them. */
+    static std::vector<std::string>
+    aperture_law_entries();
+
+    /** The aperture laws' entries that the chosen law leaves unused, each
+     * with the choice ("Flow/Aperture law = linear"). */
+    std::vector<UnusedEntry>
+    unused_entries() const;
 
     /** Permeability K_m ≥ 0 of the matrix (isotropic), an expression. */
     std::string permeability;
@@ -40,8 +54,12 @@ namespace PolyFrac
     double initial_porosity;
     /** Initial pressure p^0 of matrix and fractures, an expression. */
     std::string initial_pressure;
-    /** Fracture aperture at contact d_0 ≥ 0: d_f = d_0 − [u]_n. */
+    /** Fracture aperture at contact d_0 ≥ 0, the datum of the aperture
+     * law (d_f = d_0 − [u]_n with the default law). */
     double aperture_at_contact;
+    /** The aperture laws' entries with the values of the file, declared at
+     * the top level: what ApertureLaws::Registry::create() reads. */
+    std::shared_ptr<ParameterHandler> aperture_law;
     /** Minimum fracture aperture > 0: the floor of d_f in the cubic law. */
     double minimum_aperture;
     /** Whether poromechanics enriches the displacement with the normal

@@ -128,6 +128,16 @@ namespace PolyFrac
              const FlowStepData   &data,
              EnergyTerms          &terms) const;
 
+    /** −Σ_σ |σ| p_{f,σ}^n ((d^n − d^{n−1}) + ([[u^n]]_n − [[u^{n−1}]]_n)):
+     * the fluid's work on the part of the aperture change that the aperture
+     * law adds to the opening (closure under traction, dilation by slip),
+     * which the mechanics does not see; zero for d = d_0 − [[u]]_n. */
+    void
+    add_aperture_law(const MechanicalState<dim> &before,
+                     const MechanicalState<dim> &after,
+                     const Vector<double>       &p_after,
+                     EnergyTerms                &terms) const;
+
     /** [[v]]_σ of fracture face @p i in the frame (n^+, τ) of the face. */
     Tensor<1, dim>
     local_jump(const Vector<double> &v, const unsigned int i) const;
