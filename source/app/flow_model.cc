@@ -205,6 +205,7 @@ namespace PolyFrac
             "Flow/Fracture aperture at contact",
             "Flow/Minimum fracture aperture",
             "Flow/Fracture normal transmissibility",
+            "Flow/Fracture permeability",
             "Flow/Fracture compressibility",
             "Flow/Matrix source",
             "Flow/Fracture source",

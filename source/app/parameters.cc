@@ -407,6 +407,7 @@ namespace PolyFrac
     convergence.parse_parameters(*prm, *this, exact);
     contact.parse_parameters(*prm, *this);
     flow.parse_parameters(*prm, *this);
+    flow.check_fracture_count(fractures.n_fractures(), *this);
     nonlinear.parse_parameters(*prm, *this);
     solver.parse_parameters(*prm, *this);
     output.parse_parameters(*prm, *this);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -180,6 +181,52 @@ namespace PolyFrac
                   ExcMessage(where + "<" + entry + "> must be " + range +
                              ", not " + prm.get(entry) + why + "."));
       return value;
+    }
+
+
+
+    std::vector<double>
+    per_fracture_doubles(ParameterHandler  &prm,
+                         const std::string &where,
+                         const std::string &entry,
+                         const double       lower,
+                         const bool         lower_included,
+                         const std::string &range,
+                         const std::string &keyword)
+    {
+      const std::vector<std::string> items =
+        Utilities::split_string_list(prm.get(entry));
+      std::vector<double> values;
+      for (const std::string &item : items)
+        {
+          if (!keyword.empty() && item == keyword)
+            {
+              values.push_back(0);
+              continue;
+            }
+          double value = std::numeric_limits<double>::quiet_NaN();
+          try
+            {
+              value = Utilities::string_to_double(item);
+            }
+          catch (...)
+            {}
+          AssertThrow(std::isfinite(value) &&
+                        (lower_included ? value >= lower : value > lower),
+                      ExcMessage(where + "<" + entry + "> = " + prm.get(entry) +
+                                 ": each value must be " + range +
+                                 (keyword.empty() ? "" : " or " + keyword) +
+                                 ", not <" + item +
+                                 "> (one value for every fracture, or one "
+                                 "per fracture in the order of Fractures/"
+                                 "Segments, Polygons or Gmsh physical tags)."));
+          values.push_back(value);
+        }
+      AssertThrow(!values.empty(),
+                  ExcMessage(where + "<" + entry +
+                             "> is empty: give one value for every fracture, "
+                             "or one per fracture."));
+      return values;
     }
 
 

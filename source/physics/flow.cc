@@ -163,7 +163,11 @@ namespace PolyFrac
     AssertDimension(states.size(), network.n_fracture_faces());
     std::vector<double> d;
     for (unsigned int i = 0; i < states.size(); ++i)
-      d.push_back(law->aperture(i, prm.aperture_at_contact, states[i]));
+      d.push_back(law->aperture(
+        i,
+        FlowParameters::fracture_value(prm.aperture_at_contact,
+                                       network.fracture_faces[i].fracture),
+        states[i]));
     return d;
   }
 
@@ -213,10 +217,24 @@ namespace PolyFrac
 
   template <int dim>
   double
-  Flow<dim>::fracture_conductivity(const double aperture) const
+  Flow<dim>::fracture_conductivity(const unsigned int i,
+                                   const double       aperture) const
   {
     const double d = std::max(aperture, prm.minimum_aperture);
-    return d * d * d / (12 * prm.viscosity);
+    const double k_f =
+      FlowParameters::fracture_value(prm.fracture_permeability,
+                                     network.fracture_faces[i].fracture);
+    return k_f > 0 ? k_f * d / prm.viscosity : d * d * d / (12 * prm.viscosity);
+  }
+
+
+
+  template <int dim>
+  double
+  Flow<dim>::normal_transmissibility(const unsigned int i) const
+  {
+    return FlowParameters::fracture_value(prm.normal_transmissibility,
+                                          network.fracture_faces[i].fracture);
   }
 
 
@@ -407,7 +425,7 @@ namespace PolyFrac
         const auto        &ff    = network.fracture_faces[i];
         const auto        &face  = geometry.faces[ff.face];
         FullMatrix<double> local = fracture_matrices[i];
-        local *= fracture_conductivity(data.apertures[i]);
+        local *= fracture_conductivity(i, data.apertures[i]);
         Vector<double> local_rhs(local.m());
         local(0, 0) += face.measure * data.fracture_storage[i] / dt;
         local_rhs(0) = face.measure * (fracture_source->value(face.centroid) +
@@ -418,7 +436,7 @@ namespace PolyFrac
           local, local_rhs, fracture_dofs(i), matrix, rhs);
 
         // Exchange T_σ (p_{Kσ} − p_{f,σ}) with each permeable side.
-        const double       T = face.measure * flow.normal_transmissibility;
+        const double       T = face.measure * normal_transmissibility(i);
         FullMatrix<double> exchange(2, 2);
         exchange(0, 0) = exchange(1, 1) = T;
         exchange(0, 1) = exchange(1, 0) = -T;
@@ -713,7 +731,7 @@ namespace PolyFrac
   {
     const auto                local_dofs = fracture_dofs(i);
     const FullMatrix<double> &B          = fracture_matrices[i];
-    const double        conductivity     = fracture_conductivity(apertures[i]);
+    const double        conductivity = fracture_conductivity(i, apertures[i]);
     std::vector<double> fluxes(local_dofs.size() - 1, 0.);
     for (unsigned int a = 1; a < local_dofs.size(); ++a)
       for (unsigned int b = 0; b < local_dofs.size(); ++b)
@@ -737,9 +755,14 @@ namespace PolyFrac
     const double        d = data.apertures[i];
     if (d <= prm.minimum_aperture)
       return derivative;
-    // C_σ/η = d³/(12 η) and the storage d c_f, differentiated in d.
-    const double              slope = 3 * d * d / (12 * prm.viscosity);
-    const FullMatrix<double> &B     = fracture_matrices[i];
+    // C_σ/η = d³/(12 η) (or k_f d/η) and the storage d c_f,
+    // differentiated in d.
+    const double k_f =
+      FlowParameters::fracture_value(prm.fracture_permeability,
+                                     network.fracture_faces[i].fracture);
+    const double slope =
+      k_f > 0 ? k_f / prm.viscosity : 3 * d * d / (12 * prm.viscosity);
+    const FullMatrix<double> &B = fracture_matrices[i];
     for (unsigned int a = 0; a < local_dofs.size(); ++a)
       for (unsigned int b = 0; b < local_dofs.size(); ++b)
         derivative[a] += slope * B(a, b) * pressure(local_dofs[b]);
@@ -800,7 +823,7 @@ namespace PolyFrac
                         (p_f - previous(dofs.fracture_face_dof(i))));
         for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
           if (cell_mobility[cell] > 0)
-            terms.push_back(face.measure * prm.normal_transmissibility *
+            terms.push_back(face.measure * normal_transmissibility(i) *
                             (p_f - pressure(dofs.face_dof(ff.face, cell))));
         terms.push_back(-face.measure * (fracture_source->value(face.centroid) +
                                          data.fracture_rhs[i]));

@@ -41,10 +41,12 @@ namespace PolyFrac
                       "in x, y (, z).");
     prm.declare_entry("Fracture aperture at contact",
                       "1e-4",
-                      Patterns::Double(),
+                      Patterns::Anything(),
                       "d_0 >= 0 (m): the hydraulic aperture of a closed "
                       "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n) "
-                      "with Aperture law = linear.");
+                      "with Aperture law = linear. One value for every "
+                      "fracture, or one per fracture (in the order of "
+                      "Fractures/Segments, Polygons or Gmsh physical tags).");
     prm.declare_entry("Minimum fracture aperture",
                       "1e-5",
                       Patterns::Double(),
@@ -81,10 +83,21 @@ namespace PolyFrac
       "incompressible.");
     prm.declare_entry("Fracture normal transmissibility",
                       "1e-9",
-                      Patterns::Double(),
+                      Patterns::Anything(),
                       "Lambda_f >= 0 (m/(Pa s)): the exchange flux from a "
                       "matrix side into the fracture is Lambda_f (p_m trace - "
-                      "p_f).");
+                      "p_f). One value for every fracture, or one per "
+                      "fracture: a blocking fracture has a small one.");
+    prm.declare_entry("Fracture permeability",
+                      "cubic law",
+                      Patterns::Anything(),
+                      "The flow along a fracture of aperture d: cubic law "
+                      "(the conductivity d^3/12 over the viscosity), or a "
+                      "permeability k_f > 0 (m^2) with the conductivity "
+                      "k_f d over the viscosity (d floored at Minimum "
+                      "fracture aperture in both). One value for every "
+                      "fracture, or one per fracture (cubic law or a number "
+                      "each): a blocking fracture has a small k_f.");
     prm.declare_entry("Matrix source",
                       "0",
                       Patterns::Anything(),
@@ -158,23 +171,21 @@ namespace PolyFrac
       bounded("Inverse Biot modulus", 0, infinity, false, ">= 0 (1/Pa)");
     initial_porosity = bounded(
       "Initial porosity", 0, std::nextafter(1., 0.), false, "in [0, 1)");
-    initial_pressure = context.checked_expression("Flow/Initial pressure",
+    initial_pressure    = context.checked_expression("Flow/Initial pressure",
                                                   prm.get("Initial pressure"),
                                                   1);
-    aperture_at_contact =
-      bounded("Fracture aperture at contact", 0, infinity, false, ">= 0 (m)");
+    aperture_at_contact = ParameterParsing::per_fracture_doubles(
+      prm, where, "Fracture aperture at contact", 0, true, ">= 0 (m)");
     minimum_aperture =
       bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
-    for (const std::string entry :
-         {"Minimum fracture aperture", "Fracture aperture at contact"})
-      {
-        // The cubic law's conductivity d³/(12 η) of the aperture must be a
-        // positive double, or the fracture flow is singular or infinite.
-        const double d = prm.get_double(entry);
+    // The cubic law's conductivity d³/(12 η) of the apertures must be a
+    // positive double, or the fracture flow is singular or infinite.
+    const auto check_conductivity =
+      [&](const std::string &entry, const std::string &value, const double d) {
         const double conductivity =
           std::pow(std::max(d, minimum_aperture), 3) / (12 * viscosity);
         AssertThrow(std::isnormal(conductivity) && conductivity > 0,
-                    ExcMessage(where + "<" + entry + "> = " + prm.get(entry) +
+                    ExcMessage(where + "<" + entry + "> = " + value +
                                " with <Viscosity> = " + prm.get("Viscosity") +
                                " gives the cubic-law conductivity d^3/(12 "
                                "viscosity) = " +
@@ -183,7 +194,14 @@ namespace PolyFrac
                                "denormal one, without digits): give "
                                "the apertures in m (about 1e-6 to 1e-2) and "
                                "the viscosity in Pa s (1e-3 for water)."));
-      }
+      };
+    check_conductivity("Minimum fracture aperture",
+                       prm.get("Minimum fracture aperture"),
+                       minimum_aperture);
+    for (const double d : aperture_at_contact)
+      check_conductivity("Fracture aperture at contact",
+                         prm.get("Fracture aperture at contact"),
+                         d);
     face_bubbles = prm.get_bool("Face bubbles");
     pressure_stabilisation =
       bounded("Pressure stabilisation", 0, infinity, false, ">= 0");
@@ -197,15 +215,19 @@ namespace PolyFrac
                            "Face bubbles = false."));
     fracture_compressibility =
       bounded("Fracture compressibility", 0, infinity, false, ">= 0 (1/Pa)");
-    normal_transmissibility = bounded("Fracture normal transmissibility",
-                                      0,
-                                      infinity,
-                                      false,
-                                      ">= 0 (m/(Pa s))");
-    matrix_source           = context.checked_expression("Flow/Matrix source",
+    normal_transmissibility =
+      ParameterParsing::per_fracture_doubles(prm,
+                                             where,
+                                             "Fracture normal transmissibility",
+                                             0,
+                                             true,
+                                             ">= 0 (m/(Pa s))");
+    fracture_permeability = ParameterParsing::per_fracture_doubles(
+      prm, where, "Fracture permeability", 0, false, "> 0 (m^2)", "cubic law");
+    matrix_source   = context.checked_expression("Flow/Matrix source",
                                                prm.get("Matrix source"),
                                                1);
-    fracture_source         = context.checked_expression("Flow/Fracture source",
+    fracture_source = context.checked_expression("Flow/Fracture source",
                                                  prm.get("Fracture source"),
                                                  1);
     const std::string fwhere = context.where("Flow");
@@ -243,6 +265,28 @@ namespace PolyFrac
                            ">."));
     aperture_law = parse_parameter_extensions("Flow", prm, context);
     prm.leave_subsection();
+  }
+
+
+
+  void
+  FlowParameters::check_fracture_count(const unsigned int      n_fractures,
+                                       const ParameterContext &context) const
+  {
+    for (const auto &[entry, values] :
+         {std::pair<std::string, const std::vector<double> &>(
+            "Fracture aperture at contact", aperture_at_contact),
+          {"Fracture normal transmissibility", normal_transmissibility},
+          {"Fracture permeability", fracture_permeability}})
+      AssertThrow(values.size() == 1 || values.size() == n_fractures,
+                  ExcMessage(context.where("Flow") + ": <" + entry +
+                             "> lists " + std::to_string(values.size()) +
+                             " values, but the scene has " +
+                             std::to_string(n_fractures) +
+                             " fractures: give one value for every fracture, "
+                             "or one per fracture (in the order of "
+                             "Fractures/Segments, Polygons or Gmsh physical "
+                             "tags)."));
   }
 
 

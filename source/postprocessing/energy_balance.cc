@@ -296,7 +296,7 @@ namespace PolyFrac
               const double jump =
                 p_after(pressure_dofs.face_dof(ff.face, cell)) - p_f;
               exchange += dt * measure *
-                          flow.parameters().normal_transmissibility * jump *
+                          flow.normal_transmissibility(i) * jump *
                           jump;
             }
         const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);

@@ -789,6 +789,19 @@ CASES = {
          "cubic-law conductivity", "not a positive double"],
         files={"scene.prm": section("Flow", Fracture_aperture_at_contact="1e300")},
         absent=["Stacktrace", "An error occurred"]),
+    "fracture_property_count": case(
+        "`Fracture normal transmissibility = 1e-9, 1e-12` in a scene with "
+        "one fracture (a list per fracture of the wrong length)",
+        ["subsection <Flow>: <Fracture normal transmissibility> lists 2 "
+         "values, but the scene has 1 fractures", "one per fracture"],
+        files={"scene.prm": SEGMENT + section(
+            "Flow", Fracture_normal_transmissibility="1e-9, 1e-12")}),
+    "fracture_permeability_not_a_number": case(
+        "`Fracture permeability = cubic, 1e-12` (a misspelt keyword)",
+        ["<Fracture permeability> = cubic, 1e-12: each value must be > 0 "
+         "(m^2) or cubic law, not <cubic>"],
+        files={"scene.prm": section("Flow",
+                                    Fracture_permeability="cubic, 1e-12")}),
     "minimum_aperture_beneath_double": case(
         "`Minimum fracture aperture = 1e-300` with `Fracture aperture at "
         "contact = 0`: d^3 underflows to 0",

@@ -51,8 +51,8 @@ check(const std::string                       &mesh_name,
   mesh_setup(prm);
   prm.flow.viscosity               = 0.5;
   prm.flow.permeability            = "2";
-  prm.flow.normal_transmissibility = 3;
-  prm.flow.aperture_at_contact     = 0.4;
+  prm.flow.normal_transmissibility = {3};
+  prm.flow.aperture_at_contact     = {0.4};
   test.setup(prm);
   const LevelDiscretization<dim> level(prm.level_parameters(), 0);
   const auto                    &geometry = *level.geometry;

@@ -82,8 +82,8 @@ set_manufactured_solution(Parameters &prm, const unsigned int dim)
   prm.constants                    = {{"k", 1.}, {"lambda_f", 2.}, {"C", 1.}};
   prm.flow.permeability            = "k";
   prm.flow.viscosity               = 1;
-  prm.flow.normal_transmissibility = 2;
-  prm.flow.aperture_at_contact     = std::cbrt(12.);
+  prm.flow.normal_transmissibility = {2};
+  prm.flow.aperture_at_contact     = {std::cbrt(12.)};
   prm.flow.inverse_biot_modulus    = 0;
   const std::string p_m            = q + " + " + B + "*abs(y)";
   const std::string on_A           = "abs(y) < 1e-12";

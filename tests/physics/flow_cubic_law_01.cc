@@ -34,7 +34,7 @@ check(const std::string &cell_type, const double aperture)
   // The steady cubic law after one step: no fluid storage in the fracture.
   prm.flow.fracture_compressibility = 0;
   prm.flow.viscosity                = 1e-3;
-  prm.flow.aperture_at_contact      = aperture;
+  prm.flow.aperture_at_contact      = {aperture};
   prm.flow.minimum_aperture         = 1e-5;
   prm.flow.pressure_ids             = {0, 1};
   prm.flow.pressure_expression      = "0.5*(1 - x)";

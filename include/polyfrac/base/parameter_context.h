@@ -169,6 +169,23 @@ namespace PolyFrac
                    const std::string &range,
                    const std::string &why = "");
 
+    /**
+     * The entry @p entry of the current subsection of @p prm as a list of
+     * doubles, one for all fractures or one per fracture, each checked as
+     * by bounded_double(); an item that reads @p keyword (if not empty)
+     * gives 0. Throws naming @p where and the entry otherwise. The length
+     * is checked against the fractures by the caller, who knows them
+     * (FlowParameters::check_fracture_count()).
+     */
+    std::vector<double>
+    per_fracture_doubles(ParameterHandler  &prm,
+                         const std::string &where,
+                         const std::string &entry,
+                         const double       lower,
+                         const bool         lower_included,
+                         const std::string &range,
+                         const std::string &keyword = "");
+
     /** The entry @p entry of the current subsection of @p prm that reads
      * `auto` or a positive number: 0 for auto, the number otherwise, and
      * -1 for anything else (a number <= 0 or not a number), which the

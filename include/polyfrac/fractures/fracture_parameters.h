@@ -30,6 +30,13 @@ namespace PolyFrac
     static std::vector<UnusedEntry>
     unused_entries(const unsigned int dim);
 
+    /** The number of fractures: of geometries, or of gmsh tags. */
+    unsigned int
+    n_fractures() const
+    {
+      return geometries.size() + gmsh_physical_tags.size();
+    }
+
     /** Whether the scene has fractures (geometries or gmsh tags). */
     bool
     any() const;

@@ -90,7 +90,9 @@ namespace PolyFrac
    *   normal transmissibility);
    * - fracture face σ: |σ| a_σ (p_{f,σ} − p_{f,σ}^{n−1})/Δt + Σ_e F_{σe}
    *   − Σ_{±} T_σ (p_{±σ} − p_{f,σ}) = |σ| (h_f(x̄_σ) + r_σ), F_{σe} =
-   *   −(C_σ/η) (B_σ p_f)_e, C_σ = max(d_σ, d_min)³/12 (cubic law);
+   *   −(C_σ/η) (B_σ p_f)_e, C_σ = max(d_σ, d_min)³/12 (cubic law) or k_f
+   *   max(d_σ, d_min) (Flow/Fracture permeability); Λ_f, d_0 and k_f may
+   *   differ from fracture to fracture;
    * - fracture edge e: Σ_σ F_{σe} = 0 (Kirchhoff, also at intersections;
    *   at a tip, no flow), p_e = g_p(x_e) on a Pressure boundary id, no flow
    *   on the other boundary ids.
@@ -262,9 +264,16 @@ namespace PolyFrac
     double
     fracture_fluid_storage(const double aperture) const;
 
-    /** C_σ/η = max(d, d_min)³/(12 η), the fracture conductivity. */
+    /** C_σ/η of fracture face @p i at the aperture @p aperture: the cubic
+     * law's max(d, d_min)³/(12 η), or k_f max(d, d_min)/η with the
+     * Flow/Fracture permeability k_f of its fracture. */
     double
-    fracture_conductivity(const double aperture) const;
+    fracture_conductivity(const unsigned int i, const double aperture) const;
+
+    /** Λ_f of fracture face @p i (Flow/Fracture normal transmissibility of
+     * its fracture). */
+    double
+    normal_transmissibility(const unsigned int i) const;
 
     /** K_m(x̄_K)/η of cell @p c. */
     double
