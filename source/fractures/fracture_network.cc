@@ -369,13 +369,17 @@ namespace PolyFrac
   template struct Fracture<2>;
   template struct Fracture<3>;
   template <int dim>
-  std::vector<Point<dim>>
-  FractureNetwork<dim>::centroids(const MeshGeometry<dim> &geometry) const
+  FaceSites<dim>
+  FractureNetwork<dim>::face_sites(const MeshGeometry<dim> &geometry) const
   {
-    std::vector<Point<dim>> points;
+    FaceSites<dim> sites;
     for (const FractureFace &fracture_face : fracture_faces)
-      points.push_back(geometry.faces[fracture_face.face].centroid);
-    return points;
+      {
+        sites.centroids.push_back(geometry.faces[fracture_face.face].centroid);
+        sites.fractures.push_back(fracture_face.fracture);
+      }
+    sites.n_fractures = n_fractures();
+    return sites;
   }
 
 

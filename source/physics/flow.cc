@@ -68,7 +68,7 @@ namespace PolyFrac
                                          context.constants))
     , law(ApertureLaws::Registry::create(*prm.aperture_law,
                                          context,
-                                         network.centroids(geometry)))
+                                         network.face_sites(geometry)))
   {
     const auto                  &mesh = geometry.mesh;
     std::set<types::boundary_id> mesh_ids;

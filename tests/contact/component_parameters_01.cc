@@ -153,7 +153,7 @@ main()
                               "  set Complementarity parameter = 1e9\n"
                               "end\n");
   AssertThrow(contact.beta == 1e9, ExcInternalError());
-  const auto law = FrictionLaws::create<2>(contact, context_2d, {});
+  const auto law = FrictionLaws::create<2>(contact, context_2d, FaceSites<2>());
   AssertThrow(law->name() == "Tresca", ExcInternalError());
   std::cout << "Contact: beta " << contact.beta << ", friction law "
             << law->name() << "; unused entries";
@@ -183,7 +183,9 @@ main()
                                              " set Friction law = Tresca\n"
                                              " set Tresca threshold = -1\n"
                                              "end\n");
-                 FrictionLaws::create<2>(negative, context_2d, {Point<2>()});
+                 FrictionLaws::create<2>(negative,
+                                         context_2d,
+                                         FaceSites<2>{{Point<2>()}, {0}, 1});
                });
 
   // Solvers and time: enums after parsing, the bounds of each.

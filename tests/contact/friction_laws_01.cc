@@ -3,8 +3,10 @@
 // against its closed form, its derivatives in b_n and in the slip path s
 // against central differences of the bound in contact (b_n > 0, away from
 // the kink of slip weakening), whether a face out of contact is free and
-// whether slip counts in increments, and that a wrong coefficient is
-// refused naming the entry. The test fails (exit status) on any mismatch.
+// whether slip counts in increments, coefficients given per fracture (one
+// face on each of two fractures), and that a wrong coefficient, or a list
+// of the wrong length, is refused naming the entry. The test fails (exit
+// status) on any mismatch.
 
 #include <deal.II/base/mpi.h>
 
@@ -53,10 +55,12 @@ namespace
   void
   check(const Case &expected)
   {
-    const std::vector<Point<2>> centroids = {Point<2>(2, 0),
-                                             Point<2>(0.5, 0.25)};
-    const Parameters            prm       = parameters(expected.settings);
-    const auto law = FrictionLaws::create(prm.contact, prm, centroids);
+    const FaceSites<2>           faces = {{Point<2>(2, 0), Point<2>(0.5, 0.25)},
+                                          {0, 1},
+                                          2};
+    const std::vector<Point<2>> &centroids = faces.centroids;
+    const Parameters             prm       = parameters(expected.settings);
+    const auto law = FrictionLaws::create(prm.contact, prm, faces);
     std::cout << law->name() << ":";
     AssertThrow(law->name() == expected.name, ExcInternalError());
     AssertThrow(law->is_free(true) == expected.free_in_contact,
@@ -161,6 +165,50 @@ main(int argc, char **argv)
          false,
          true,
          true});
+  // Per fracture: the first face is on fracture 0, the second on 1.
+  check({{"Friction law=Coulomb", "Friction coefficient=0.6, 0.3"},
+         "Coulomb",
+         [&](unsigned int face, double b, double) {
+           return (face == 0 ? 0.6 : 0.3) * positive(b);
+         },
+         false,
+         true,
+         true});
+  check({{"Friction law=linear slip weakening",
+          "Friction coefficient=0.6, 0.5",
+          "Dynamic friction coefficient=0.4",
+          "Slip-weakening distance=1e-3"},
+         "linear slip weakening",
+         [&](unsigned int face, double b, double s) {
+           const double F_s = face == 0 ? 0.6 : 0.5;
+           return (F_s - (F_s - 0.4) * std::min(s, 1e-3) / 1e-3) * positive(b);
+         },
+         false,
+         true,
+         true});
+  {
+    std::string message;
+    try
+      {
+        FrictionLaws::create(
+          parameters({"Friction coefficient=0.6, 0.3, 0.2"}).contact,
+          parameters({}),
+          FaceSites<2>{{Point<2>(), Point<2>()}, {0, 1}, 2});
+      }
+    catch (const ExceptionBase &e)
+      {
+        message = exception_message(e);
+      }
+    std::cout << "refused: " << message << std::endl;
+    AssertThrow(message.find("<Friction coefficient> lists 3 values, but the "
+                             "scene has 2 fractures") != std::string::npos,
+                ExcMessage("not refused as expected: " + message));
+  }
+  check_refused({"Friction law=linear slip weakening",
+                 "Friction coefficient=0.6, 0.3",
+                 "Dynamic friction coefficient=0.4"},
+                "<Dynamic friction coefficient> must lie in [0, Friction "
+                "coefficient] = [0, 0.6, 0.3], not 0.4");
   check_refused({"Friction law=linear slip weakening",
                  "Dynamic friction coefficient=0.7"},
                 "<Dynamic friction coefficient> must lie in [0, Friction "
@@ -173,7 +221,8 @@ main(int argc, char **argv)
                 "<Cohesion> must be a finite stress >= 0 (Pa), not -1");
   check_refused({"Friction law=Coulomb with cohesion",
                  "Friction coefficient=-0.1"},
-                "<Friction coefficient> must be >= 0, not -0.1");
+                "<Friction coefficient> = -0.1: each value must be >= 0, not "
+                "<-0.1>");
   check_refused({"Friction law=Tresca", "Tresca threshold=foo"},
                 "Entry <Contact/Tresca threshold>: cannot parse <foo>");
 }

@@ -56,9 +56,8 @@ namespace
   check(const Case &expected)
   {
     const Parameters prm = parameters(expected.settings);
-    const auto law = ApertureLaws::Registry::create<2>(*prm.flow.aperture_law,
-                                                       prm,
-                                                       {Point<2>(0.5, 0.25)});
+    const auto       law = ApertureLaws::Registry::create<2>(
+      *prm.flow.aperture_law, prm, FaceSites<2>{{Point<2>(0.5, 0.25)}, {0}, 1});
     std::cout << law->name() << ":";
     AssertThrow(law->name() == expected.name, ExcInternalError());
     for (const double jump : {-3e-5, 0.})

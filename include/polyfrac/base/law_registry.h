@@ -19,6 +19,28 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
+   * The fracture faces a law is created for: the centroid of each face
+   * (where expressions are evaluated) and the index of its fracture (for
+   * data given per fracture), and the number of fractures. Empty when the
+   * law is created only to read and check its entries.
+   */
+  template <int dim>
+  struct FaceSites
+  {
+    /** x̄_σ per fracture face. */
+    std::vector<Point<dim>> centroids;
+    /** The fracture of each face (an index into the fractures of the
+     * scene, in the order of Fractures/Segments, Polygons or Gmsh
+     * physical tags). */
+    std::vector<unsigned int> fractures;
+    /** The number of fractures of the scene (0: not known, the entries
+     * are only checked). */
+    unsigned int n_fractures = 0;
+  };
+
+
+
+  /**
    * Where the laws of one kind are chosen: a specialisation for each law
    * interface gives the subsection, the entry that chooses a law, the
    * default law and the first sentence of the entry's documentation (see
@@ -46,17 +68,17 @@ namespace PolyFrac
   {
   public:
     /**
-     * A law's factory: the law for the fracture faces with the centroids
-     * @p centroids (none: only read and check the entries), reading its
+     * A law's factory: the law for the fracture faces @p faces (none:
+     * only read and check the entries), reading its
      * entries from @p prm (the subsection entered, or the snapshot of
      * create()); throws, naming the file of @p context and the entry, on
      * a wrong value.
      */
     template <int dim>
-    using Factory = std::function<std::unique_ptr<LawInterface<dim>>(
-      ParameterHandler              &prm,
-      const ParameterContext        &context,
-      const std::vector<Point<dim>> &centroids)>;
+    using Factory = std::function<
+      std::unique_ptr<LawInterface<dim>>(ParameterHandler       &prm,
+                                         const ParameterContext &context,
+                                         const FaceSites<dim>   &faces)>;
 
     /** What a law registers (see Registration). */
     struct Law
@@ -78,7 +100,7 @@ namespace PolyFrac
 
     /**
      * Registers the law `LawClass<dim>`, constructed as `LawClass<dim>(prm,
-     * context, centroids)` (see Factory): a static object of this type in
+     * context, faces)` (see Factory): a static object of this type in
      * the law's file is its registration line.
      */
     template <template <int> class LawClass>
@@ -95,15 +117,15 @@ namespace PolyFrac
            description,
            entries,
            declare,
-           [](ParameterHandler            &prm,
-              const ParameterContext      &context,
-              const std::vector<Point<2>> &centroids) {
-             return std::make_unique<LawClass<2>>(prm, context, centroids);
+           [](ParameterHandler       &prm,
+              const ParameterContext &context,
+              const FaceSites<2>     &faces) {
+             return std::make_unique<LawClass<2>>(prm, context, faces);
            },
-           [](ParameterHandler            &prm,
-              const ParameterContext      &context,
-              const std::vector<Point<3>> &centroids) {
-             return std::make_unique<LawClass<3>>(prm, context, centroids);
+           [](ParameterHandler       &prm,
+              const ParameterContext &context,
+              const FaceSites<3>     &faces) {
+             return std::make_unique<LawClass<3>>(prm, context, faces);
            }});
       }
     };
@@ -125,14 +147,14 @@ namespace PolyFrac
 
     /** The law that @p snapshot chooses (the extension's entries at the
      * top level, as the subsection's parameters keep them), for the
-     * fracture faces with the centroids @p centroids. */
+     * fracture faces @p faces. */
     template <int dim>
     static std::unique_ptr<LawInterface<dim>>
-    create(ParameterHandler              &snapshot,
-           const ParameterContext        &context,
-           const std::vector<Point<dim>> &centroids)
+    create(ParameterHandler       &snapshot,
+           const ParameterContext &context,
+           const FaceSites<dim>   &faces)
     {
-      return factory<dim>(chosen(snapshot))(snapshot, context, centroids);
+      return factory<dim>(chosen(snapshot))(snapshot, context, faces);
     }
 
   private:

@@ -126,15 +126,15 @@ namespace PolyFrac
     using Registration = Registry::Registration<LawClass>;
 
     /** The law that Contact/Friction law of @p prm chooses, for the
-     * fracture faces with the centroids @p centroids; @p context gives the
+     * fracture faces @p faces; @p context gives the
      * file named in messages and the constants of the expressions. */
     template <int dim>
     std::unique_ptr<FrictionLaw<dim>>
-    create(const ContactParameters       &prm,
-           const ParameterContext        &context,
-           const std::vector<Point<dim>> &centroids)
+    create(const ContactParameters &prm,
+           const ParameterContext  &context,
+           const FaceSites<dim>    &faces)
     {
-      return Registry::create(*prm.friction_law, context, centroids);
+      return Registry::create(*prm.friction_law, context, faces);
     }
 
     /** The law that Contact/Friction law of @p prm chooses, for the
@@ -146,7 +146,7 @@ namespace PolyFrac
            const MeshGeometry<dim>    &geometry,
            const FractureNetwork<dim> &network)
     {
-      return create(prm, context, network.centroids(geometry));
+      return create(prm, context, network.face_sites(geometry));
     }
   } // namespace FrictionLaws
 } // namespace PolyFrac

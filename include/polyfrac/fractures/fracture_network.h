@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <polyfrac/base/law_registry.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/mesh/polytopal_mesh.h>
 
@@ -135,11 +136,11 @@ namespace PolyFrac
     Tensor<2, dim>
     frame(const unsigned int i) const;
 
-    /** The centroids of the fracture faces, in their order (the points
-     * where per-face data such as the friction and aperture laws'
-     * expressions are evaluated). */
-    std::vector<Point<dim>>
-    centroids(const MeshGeometry<dim> &geometry) const;
+    /** The centroids and fractures of the fracture faces, in their order,
+     * and the number of fractures: what the friction and aperture laws
+     * evaluate their data on (LawRegistry). */
+    FaceSites<dim>
+    face_sites(const MeshGeometry<dim> &geometry) const;
 
     /** Number of fractures. */
     unsigned int

@@ -5,14 +5,27 @@ namespace PolyFrac
   template <int dim>
   Coulomb<dim>::Coulomb(ParameterHandler       &prm,
                         const ParameterContext &context,
-                        const std::vector<Point<dim>> &)
-    : coefficient(prm.get_double("Friction coefficient"))
+                        const FaceSites<dim>   &faces)
+    : coefficients(
+        ParameterParsing::per_fracture_doubles(prm,
+                                               context.where("Contact") + ": ",
+                                               "Friction coefficient",
+                                               0,
+                                               true,
+                                               ">= 0"))
+    , fractures(faces.fractures)
   {
-    AssertThrow(coefficient >= 0,
-                ExcMessage("In <" + context.file_name +
-                           ">, subsection <Contact>: <Friction "
-                           "coefficient> must be >= 0, not " +
-                           prm.get("Friction coefficient") + "."));
+    AssertThrow(faces.n_fractures == 0 || coefficients.size() == 1 ||
+                  coefficients.size() == faces.n_fractures,
+                ExcMessage(context.where("Contact") +
+                           ": <Friction coefficient> lists " +
+                           std::to_string(coefficients.size()) +
+                           " values, but the scene has " +
+                           std::to_string(faces.n_fractures) +
+                           " fractures: give one value for every fracture, "
+                           "or one per fracture (in the order of "
+                           "Fractures/Segments, Polygons or Gmsh physical "
+                           "tags)."));
   }
 
 
@@ -30,8 +43,11 @@ namespace PolyFrac
       [](ParameterHandler &prm) {
         prm.declare_entry("Friction coefficient",
                           "0.57735",
-                          Patterns::Double(),
-                          "Coulomb friction coefficient F >= 0.");
+                          Patterns::Anything(),
+                          "Coulomb friction coefficient F >= 0: one value for "
+                          "every fracture, or one per fracture (in the order "
+                          "of Fractures/Segments, Polygons or Gmsh physical "
+                          "tags).");
       });
   } // namespace
 } // namespace PolyFrac

@@ -15,10 +15,10 @@ namespace PolyFrac
     class CoulombWithCohesion : public Coulomb<dim>
     {
     public:
-      CoulombWithCohesion(ParameterHandler              &prm,
-                          const ParameterContext        &context,
-                          const std::vector<Point<dim>> &centroids)
-        : Coulomb<dim>(prm, context, centroids)
+      CoulombWithCohesion(ParameterHandler       &prm,
+                          const ParameterContext &context,
+                          const FaceSites<dim>   &faces)
+        : Coulomb<dim>(prm, context, faces)
         , cohesion(prm.get_double("Cohesion"))
       {
         AssertThrow(cohesion >= 0 && std::isfinite(cohesion),

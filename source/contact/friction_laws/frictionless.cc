@@ -11,7 +11,7 @@ namespace PolyFrac
     public:
       Frictionless(ParameterHandler &,
                    const ParameterContext &,
-                   const std::vector<Point<dim>> &)
+                   const FaceSites<dim> &)
       {}
 
       std::string

@@ -25,23 +25,24 @@ namespace PolyFrac
     class LinearSlipWeakening : public Coulomb<dim>
     {
     public:
-      LinearSlipWeakening(ParameterHandler              &prm,
-                          const ParameterContext        &context,
-                          const std::vector<Point<dim>> &centroids)
-        : Coulomb<dim>(prm, context, centroids)
+      LinearSlipWeakening(ParameterHandler       &prm,
+                          const ParameterContext &context,
+                          const FaceSites<dim>   &faces)
+        : Coulomb<dim>(prm, context, faces)
         , dynamic_coefficient(prm.get_double("Dynamic friction coefficient"))
         , weakening_distance(prm.get_double("Slip-weakening distance"))
       {
         const std::string where =
           "In <" + context.file_name + ">, subsection <Contact>: <";
-        AssertThrow(dynamic_coefficient >= 0 &&
-                      dynamic_coefficient <= this->friction_coefficient(),
-                    ExcMessage(where +
-                               "Dynamic friction coefficient> must lie in [0, "
-                               "Friction coefficient] = [0, " +
-                               prm.get("Friction coefficient") + "], not " +
-                               prm.get("Dynamic friction coefficient") +
-                               ": the friction weakens with slip."));
+        AssertThrow(
+          dynamic_coefficient >= 0 &&
+            dynamic_coefficient <= this->smallest_friction_coefficient(),
+          ExcMessage(where +
+                     "Dynamic friction coefficient> must lie in [0, "
+                     "Friction coefficient] = [0, " +
+                     prm.get("Friction coefficient") + "], not " +
+                     prm.get("Dynamic friction coefficient") +
+                     ": the friction weakens with slip (on every fracture)."));
         AssertThrow(weakening_distance > 0 && std::isfinite(weakening_distance),
                     ExcMessage(where +
                                "Slip-weakening distance> must be a finite "
@@ -56,29 +57,29 @@ namespace PolyFrac
       }
 
       double
-      slip_bound(const unsigned int,
-                 const double normal,
-                 const double slip) const override
+      slip_bound(const unsigned int face,
+                 const double       normal,
+                 const double       slip) const override
       {
-        return coefficient(slip) * std::max(normal, 0.);
+        return coefficient(face, slip) * std::max(normal, 0.);
       }
 
       /** F(s): the derivative in contact (b_n > 0), where the bound acts. */
       double
-      slip_bound_derivative(const unsigned int,
+      slip_bound_derivative(const unsigned int face,
                             const double,
                             const double slip) const override
       {
-        return coefficient(slip);
+        return coefficient(face, slip);
       }
 
       double
-      slip_bound_slip_derivative(const unsigned int,
-                                 const double normal,
-                                 const double slip) const override
+      slip_bound_slip_derivative(const unsigned int face,
+                                 const double       normal,
+                                 const double       slip) const override
       {
         return slip < weakening_distance ?
-                 -(this->friction_coefficient() - dynamic_coefficient) /
+                 -(this->friction_coefficient(face) - dynamic_coefficient) /
                    weakening_distance * std::max(normal, 0.) :
                  0.;
       }
@@ -95,11 +96,11 @@ namespace PolyFrac
       }
 
     private:
-      /** F(s). */
+      /** F(s) of fracture face @p face. */
       double
-      coefficient(const double slip) const
+      coefficient(const unsigned int face, const double slip) const
       {
-        const double static_coefficient = this->friction_coefficient();
+        const double static_coefficient = this->friction_coefficient(face);
         return static_coefficient - (static_coefficient - dynamic_coefficient) *
                                       std::min(slip, weakening_distance) /
                                       weakening_distance;

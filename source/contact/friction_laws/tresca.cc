@@ -18,9 +18,9 @@ namespace PolyFrac
     class Tresca : public FrictionLaw<dim>
     {
     public:
-      Tresca(ParameterHandler              &prm,
-             const ParameterContext        &context,
-             const std::vector<Point<dim>> &centroids)
+      Tresca(ParameterHandler       &prm,
+             const ParameterContext &context,
+             const FaceSites<dim>   &faces)
       {
         std::unique_ptr<Function<dim>> g;
         try
@@ -36,7 +36,7 @@ namespace PolyFrac
                         ExcMessage("In <" + context.file_name +
                                    ">: " + exception_message(e)));
           }
-        for (const Point<dim> &centroid : centroids)
+        for (const Point<dim> &centroid : faces.centroids)
           {
             threshold.push_back(g->value(centroid));
             std::ostringstream where;

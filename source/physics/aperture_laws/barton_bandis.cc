@@ -24,7 +24,7 @@ namespace PolyFrac
        * stiffness (see ApertureLaws::Registry::Factory). */
       BartonBandis(ParameterHandler       &prm,
                    const ParameterContext &context,
-                   const std::vector<Point<dim>> &)
+                   const FaceSites<dim> &)
       {
         const std::string where    = context.where("Flow") + ": ";
         const double      infinity = std::numeric_limits<double>::max();

@@ -15,7 +15,7 @@ namespace PolyFrac
       /** Reads nothing (see ApertureLaws::Registry::Factory). */
       Linear(ParameterHandler &,
              const ParameterContext &,
-             const std::vector<Point<dim>> &)
+             const FaceSites<dim> &)
       {}
 
       std::string

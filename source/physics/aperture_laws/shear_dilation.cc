@@ -21,7 +21,7 @@ namespace PolyFrac
        * ApertureLaws::Registry::Factory). */
       ShearDilation(ParameterHandler       &prm,
                     const ParameterContext &context,
-                    const std::vector<Point<dim>> &)
+                    const FaceSites<dim> &)
       {
         const std::string where = context.where("Flow") + ": ";
         const double      angle = ParameterParsing::bounded_double(

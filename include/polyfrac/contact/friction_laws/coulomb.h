@@ -9,19 +9,21 @@ namespace PolyFrac
 {
   /**
    * Coulomb friction, quasi-static: the slip bound F [b_n]_+ (F =
-   * Contact/Friction coefficient), a face out of contact free, slip
-   * counted in increments between load or time steps. Laws of its kind
-   * (Coulomb with cohesion, linear slip weakening) derive from it.
+   * Contact/Friction coefficient, one value for every fracture or one per
+   * fracture), a face out of contact free, slip counted in increments
+   * between load or time steps. Laws of its kind (Coulomb with cohesion,
+   * linear slip weakening) derive from it.
    */
   template <int dim>
   class Coulomb : public FrictionLaw<dim>
   {
   public:
     /** Reads and checks Contact/Friction coefficient (see
-     * FrictionLaws::Factory). */
-    Coulomb(ParameterHandler              &prm,
-            const ParameterContext        &context,
-            const std::vector<Point<dim>> &centroids);
+     * LawRegistry::Factory); throws if it lists neither one value nor one
+     * per fracture of @p faces. */
+    Coulomb(ParameterHandler       &prm,
+            const ParameterContext &context,
+            const FaceSites<dim>   &faces);
 
     std::string
     name() const override
@@ -42,33 +44,44 @@ namespace PolyFrac
     }
 
     double
-    slip_bound(const unsigned int,
-               const double normal,
+    slip_bound(const unsigned int face,
+               const double       normal,
                const double) const override
     {
-      return coefficient * std::max(normal, 0.);
+      return friction_coefficient(face) * std::max(normal, 0.);
     }
 
     /** F: the derivative in contact (b_n > 0), where the bound acts. */
     double
-    slip_bound_derivative(const unsigned int,
+    slip_bound_derivative(const unsigned int face,
                           const double,
                           const double) const override
     {
-      return coefficient;
+      return friction_coefficient(face);
     }
 
   protected:
-    /** F (the static coefficient of laws that weaken). */
+    /** F of fracture face @p face (the static coefficient of laws that
+     * weaken). */
     double
-    friction_coefficient() const
+    friction_coefficient(const unsigned int face) const
     {
-      return coefficient;
+      return coefficients.size() == 1 ? coefficients[0] :
+                                        coefficients[fractures[face]];
+    }
+
+    /** The smallest F of all fractures. */
+    double
+    smallest_friction_coefficient() const
+    {
+      return *std::min_element(coefficients.begin(), coefficients.end());
     }
 
   private:
-    /** F. */
-    const double coefficient;
+    /** F, one for all fractures or one per fracture. */
+    std::vector<double> coefficients;
+    /** The fracture of each face. */
+    std::vector<unsigned int> fractures;
   };
 } // namespace PolyFrac
 

@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Friction coefficients per fracture (Contact/Friction coefficient = 1, 0.2)
+in a contact scene: the box (-1, 1)^2 of lambda = mu = 1 with the affine
+boundary displacement of the patch test tests/polyfrac/patch_contact_2d_stick
+(stress sigma e_x = (-1, 0.4): every vertical fracture carries lambda_n = 1
+and a shear of 0.4), cut by two vertical fractures x = -0.5 (fracture 0) and
+x = 0.5 (fracture 1), Coulomb friction.
+
+With F = 1 on fracture 0 the shear stays below F lambda_n: every face of it
+must stick, with a ratio |lambda_tau|/lambda_n above 0.2 (near the affine
+0.4, which the slip of fracture 1 perturbs), so that it would slip under
+fracture 1's coefficient. With F = 0.2 on fracture 1 it must slip: some of
+its faces slip, and on each slipping face |lambda_tau| = 0.2 lambda_n (its
+own coefficient, not fracture 0's) to 1e-6. With one coefficient for both,
+fracture 1 would stick and the test fails.
+
+usage: per_fracture_friction.py POLYFRAC SOURCE_DIR WORK_DIR
+Exits non-zero on the first failed check.
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+try:
+    import meshio
+    import numpy as np
+except ImportError as error:
+    sys.exit(f"{error}: install Debian's python3-meshio "
+             "(apt-get install python3-meshio) and run with /usr/bin/python3")
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                os.pardir, "io"))
+from scene_summary import cell_data  # noqa: E402
+
+SCENE = """set Dimension = 2
+subsection Model
+  set Model = contact mechanics
+end
+subsection Material
+  set Lame lambda = 1
+  set Lame mu = 1
+end
+subsection Mesh
+  set Subdivisions = 8, 8
+end
+subsection Fractures
+  set Segments = -0.5, -1 : -0.5, 1; 0.5, -1 : 0.5, 1
+end
+subsection Contact
+  set Friction law = Coulomb
+  set Friction coefficient = 1, 0.2
+end
+subsection Boundary conditions
+  set Dirichlet expression = -0.3*x + 0.1*y; 0.3*x - 0.1*y
+end
+subsection Output
+  set Print timings = false
+  set Output directory = results
+end
+"""
+
+
+def fail(message):
+    sys.exit("per_fracture_friction: " + message)
+
+
+program, source, work = sys.argv[1:4]
+directory = os.path.join(work, "per_fracture_friction")
+shutil.rmtree(directory, ignore_errors=True)
+os.makedirs(directory)
+with open(os.path.join(directory, "scene.prm"), "w") as scene:
+    scene.write(SCENE)
+result = subprocess.run([program, os.path.join(directory, "scene.prm")],
+                        capture_output=True, text=True)
+if result.returncode != 0:
+    fail(f"exit {result.returncode}\n{result.stderr}")
+results = os.path.join(directory, "results")
+name = sorted(f for f in os.listdir(results)
+              if f.startswith("fractures-level-0") and f.endswith(".vtu"))[-1]
+vtu = meshio.read(os.path.join(results, name))
+# The fracture index is point data (the same at both ends of a face).
+fracture = np.rint(vtu.point_data["fracture"][vtu.cells_dict["line"][:, 0]]
+                   ).astype(int)
+state = cell_data(vtu, "tangential_state").astype(int)
+normal = cell_data(vtu, "normal_traction")
+shear = np.linalg.norm(cell_data(vtu, "tangential_traction"), axis=1)
+
+stick = fracture == 0
+print(f"fracture 0 (F = 1): {np.count_nonzero(stick)} faces, "
+      f"{np.count_nonzero(state[stick] == 0)} stick; lambda_n "
+      f"{normal[stick].min():.6g}..{normal[stick].max():.6g}, |lambda_tau| "
+      f"{shear[stick].min():.6g}..{shear[stick].max():.6g}")
+if not np.all(state[stick] == 0):
+    fail("a face of fracture 0 (F = 1) does not stick")
+# Sticking under F = 1, while its shear ratio (near the 0.4 of the affine
+# stress; the slip of fracture 1 perturbs it) exceeds fracture 1's 0.2.
+stick_ratio = shear[stick] / normal[stick]
+if not (np.max(stick_ratio) < 1 and np.min(stick_ratio) > 0.2):
+    fail("fracture 0's shear ratio is not between 0.2 and 1: the scene "
+         "does not tell the two coefficients apart")
+
+slipping = (fracture == 1) & (state == 1)
+ratio = shear[slipping] / normal[slipping]
+print(f"fracture 1 (F = 0.2): {np.count_nonzero(fracture == 1)} faces, "
+      f"{np.count_nonzero(slipping)} slip; |lambda_tau|/lambda_n "
+      f"{ratio.min() if ratio.size else 0:.6g}.."
+      f"{ratio.max() if ratio.size else 0:.6g}")
+if not np.any(slipping):
+    fail("no face of fracture 1 (F = 0.2) slips")
+if not np.max(np.abs(ratio - 0.2)) <= 1e-6:
+    fail("the slipping faces of fracture 1 are not at its own Coulomb bound")
