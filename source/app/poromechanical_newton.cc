@@ -22,11 +22,11 @@ namespace PolyFrac
     /** max_k |dx_k| / max(max_k |x_k|, @p floor) over the entries
      * [@p begin, @p end) (0 if both vanish). */
     double
-    relative_increment(const Vector<double>         &dx,
-                       const Vector<double>         &x,
-                       const types::global_dof_index begin,
-                       const types::global_dof_index end,
-                       const double                  floor)
+    range_increment(const Vector<double>         &dx,
+                    const Vector<double>         &x,
+                    const types::global_dof_index begin,
+                    const types::global_dof_index end,
+                    const double                  floor)
     {
       double step = 0, size = floor;
       for (types::global_dof_index k = begin; k < end; ++k)
@@ -351,12 +351,8 @@ namespace PolyFrac
       }
 
     // Mass: the step's data at the apertures of (u, λ).
-    std::vector<Tensor<1, dim>> lambda(dofs.n_bubbles());
-    for (unsigned int i = 0; i < lambda.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        lambda[i][d] = x(dofs.multiplier_dof(i, d));
     const std::vector<FaceDeformation> face_states =
-      coupling.face_deformations(u, lambda);
+      coupling.face_deformations(u, multipliers(x));
     const std::vector<double> d = flow.apertures(face_states);
     for (unsigned int i = 0; i < d.size(); ++i)
       {
@@ -565,20 +561,11 @@ namespace PolyFrac
                                   MechanicalState<dim> &after,
                                   Vector<double>       &p_after)
   {
-    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
-    Result                        result;
+    Result result;
     result.data         = step_data;
     FlowStepData &data  = result.data;
     data.volume_coupled = true;
-    pressure_constraints.clear();
-    if (pressures == Pressures::held)
-      for (types::global_dof_index i = 0; i < n_p; ++i)
-        {
-          pressure_constraints.add_line(i);
-          pressure_constraints.set_inhomogeneity(i, p_before(i));
-        }
-    else
-      flow.make_constraints(data, p_before, pressure_constraints);
+    make_pressure_constraints(data, p_before, pressures);
     // What the iterations share: the start of the step and the loads.
     const StepStart start{
       before,
@@ -587,15 +574,7 @@ namespace PolyFrac
       flow.apertures(
         coupling.face_deformations(before.displacement, before.multipliers)),
       volume_changes(before.displacement, before.face_bubbles)};
-
-    // The start: the guess, with the Dirichlet data and the prescribed
-    // pressures of the step.
-    Vector<double> x = join(guess, p_guess);
-    contact.set_loads(data.time, Vector<double>());
-    for (const auto &[dof, value] : contact.dirichlet_values())
-      x(dof) = value;
-    for (const auto &line : pressure_constraints.get_lines())
-      x(p0 + line.index) = line.inhomogeneity;
+    Vector<double> x = first_iterate(data.time, guess, p_guess);
 
     // The states of the guess: a state at rest keeps them and converges in
     // one iteration.
@@ -659,10 +638,7 @@ namespace PolyFrac
             Vector<double> dx = solve(residual);
             states            = line_search(x, dx, start, data, residual);
             const double increment =
-              std::max(relative_increment(dx, x, 0, n_u, displacement_floor),
-                       relative_increment(dx, x, s0, p0, displacement_floor)) +
-              std::max(relative_increment(dx, x, p0, n_dofs(), pressure_floor),
-                       relative_increment(dx, x, n_u, s0, pressure_floor));
+              relative_increment(dx, x, displacement_floor, pressure_floor);
             // Converged when the step was taken with settled states, or
             // when a second step in a row moved nothing: faces at the
             // Coulomb bound (|b_τ| = g to round-off) may flip between
@@ -708,21 +684,101 @@ namespace PolyFrac
         result.failure = what.str();
         return result;
       }
-
     // The state at the solution, with its contact states and step data
     // (linearised there by the line search).
+    split(x, before, states, after, p_after);
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::make_pressure_constraints(
+    const FlowStepData   &data,
+    const Vector<double> &p_before,
+    const Pressures       pressures)
+  {
+    pressure_constraints.clear();
+    if (pressures == Pressures::held)
+      for (types::global_dof_index i = 0; i < n_p; ++i)
+        {
+          pressure_constraints.add_line(i);
+          pressure_constraints.set_inhomogeneity(i, p_before(i));
+        }
+    else
+      flow.make_constraints(data, p_before, pressure_constraints);
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  PoromechanicalNewton<dim>::first_iterate(const double                time,
+                                           const MechanicalState<dim> &guess,
+                                           const Vector<double>       &p_guess)
+  {
+    const types::global_dof_index p0 = n_u + n_lambda + n_s;
+    Vector<double>                x  = join(guess, p_guess);
+    contact.set_loads(time, Vector<double>());
+    for (const auto &[dof, value] : contact.dirichlet_values())
+      x(dof) = value;
+    for (const auto &line : pressure_constraints.get_lines())
+      x(p0 + line.index) = line.inhomogeneity;
+    return x;
+  }
+
+
+
+  template <int dim>
+  double
+  PoromechanicalNewton<dim>::relative_increment(
+    const Vector<double> &dx,
+    const Vector<double> &x,
+    const double          displacement_floor,
+    const double          pressure_floor) const
+  {
+    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
+    return std::max(range_increment(dx, x, 0, n_u, displacement_floor),
+                    range_increment(dx, x, s0, p0, displacement_floor)) +
+           std::max(range_increment(dx, x, p0, n_dofs(), pressure_floor),
+                    range_increment(dx, x, n_u, s0, pressure_floor));
+  }
+
+
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  PoromechanicalNewton<dim>::multipliers(const Vector<double> &x) const
+  {
+    std::vector<Tensor<1, dim>> lambda(dofs.n_bubbles());
+    for (unsigned int i = 0; i < lambda.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        lambda[i][d] = x(dofs.multiplier_dof(i, d));
+    return lambda;
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::split(const Vector<double>       &x,
+                                   const MechanicalState<dim> &before,
+                                   const ContactStates        &states,
+                                   MechanicalState<dim>       &after,
+                                   Vector<double>             &p_after) const
+  {
+    const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
     after         = before;
     after.contact = states;
     after.slip    = contact.slip_path(x);
     std::copy(x.begin(), x.begin() + n_u, after.displacement.begin());
-    for (unsigned int i = 0; i < after.multipliers.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        after.multipliers[i][d] = x(dofs.multiplier_dof(i, d));
+    if (!after.multipliers.empty())
+      after.multipliers = multipliers(x);
     after.face_bubbles.reinit(n_s);
     std::copy(x.begin() + s0, x.begin() + p0, after.face_bubbles.begin());
     p_after.reinit(n_p);
     std::copy(x.begin() + p0, x.end(), p_after.begin());
-    return result;
   }
 
 

@@ -238,6 +238,137 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::pair<double, double>
+  ContactMechanics<dim>::linearise_face(const unsigned int      i,
+                                        const Tensor<1, dim>   &lambda,
+                                        const Tensor<1, dim>   &j,
+                                        const Tensor<1, dim>   &j_prev,
+                                        const ContactStates    *forced,
+                                        FaceLinearisation<dim> &face,
+                                        NormalState            &normal_state,
+                                        TangentialState &tangential_state) const
+  {
+    const Tensor<1, dim> j_old =
+      friction->slips_by_increments() ? j_prev : Tensor<1, dim>();
+    const double b = beta[i];
+    // The slip of the step and the slip path at x.
+    const Tensor<1, dim> step_slip = tangential_part(j - j_prev);
+    const double         slip      = previous_slip[i] + step_slip.norm();
+
+    // b_n, b_τ and the threshold g of §6.
+    const double   b_n = lambda[0] + b * j[0];
+    Tensor<1, dim> b_t;
+    for (unsigned int d = 1; d < dim; ++d)
+      b_t[d] = lambda[d] + b * (j[d] - j_old[d]);
+    const double b_t_norm = b_t.norm();
+    const bool   in_contact =
+      forced ? forced->normal[i] == NormalState::contact : b_n > 0;
+    const double g = friction->slip_bound(i, b_n, slip);
+
+    // Local residual r = λ − (projections) and its generalised
+    // derivatives M_λ = ∂r/∂λ, M_j = ∂r/∂[[u]] (local components).
+    Tensor<1, dim> &r        = face.r;
+    Tensor<2, dim> &M_lambda = face.M_lambda;
+    Tensor<2, dim> &M_jump   = face.M_jump;
+    normal_state = in_contact ? NormalState::contact : NormalState::open;
+    if (in_contact)
+      {
+        r[0]         = lambda[0] - b_n;
+        M_jump[0][0] = -b;
+      }
+    else
+      {
+        r[0]           = lambda[0];
+        M_lambda[0][0] = 1;
+      }
+
+    if (friction->is_free(in_contact))
+      {
+        tangential_state = TangentialState::free;
+        for (unsigned int d = 1; d < dim; ++d)
+          {
+            r[d]           = lambda[d];
+            M_lambda[d][d] = 1;
+          }
+      }
+    else if (forced ? forced->tangential[i] == TangentialState::stick :
+                      b_t_norm <= g)
+      {
+        tangential_state = TangentialState::stick;
+        for (unsigned int d = 1; d < dim; ++d)
+          {
+            r[d]         = lambda[d] - b_t[d];
+            M_jump[d][d] = -b;
+          }
+      }
+    else
+      {
+        tangential_state = TangentialState::slip;
+        linearise_slip(i, lambda, b_n, b_t, g, slip, step_slip, forced, face);
+      }
+    return {b_n, b_t_norm};
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::linearise_slip(const unsigned int      i,
+                                        const Tensor<1, dim>   &lambda,
+                                        const double            b_n,
+                                        const Tensor<1, dim>   &b_t,
+                                        const double            g,
+                                        const double            slip,
+                                        const Tensor<1, dim>   &step_slip,
+                                        const ContactStates    *forced,
+                                        FaceLinearisation<dim> &face) const
+  {
+    // λ_τ = g b_τ/|b_τ|: dP = (g/|b_τ|)(I − b̂ b̂^T) db_τ + b̂ dg. A forced
+    // slip keeps the direction b̂ (P = 0): b_τ may then be shorter than g.
+    const double   b        = beta[i];
+    const double   b_t_norm = b_t.norm();
+    Tensor<1, dim> hat;
+    hat[dim - 1]             = 1;
+    Tensor<1, dim> direction = b_t;
+    if (b_t_norm == 0)
+      {
+        direction    = lambda;
+        direction[0] = 0;
+      }
+    if (direction.norm() > 0)
+      hat = direction / direction.norm();
+    const double slope          = forced ? 0. : g / b_t_norm;
+    const double step_slip_norm = step_slip.norm();
+    for (unsigned int d = 1; d < dim; ++d)
+      {
+        face.r[d] = lambda[d] - g * hat[d];
+        for (unsigned int e = 1; e < dim; ++e)
+          {
+            const double P = slope * ((d == e ? 1. : 0.) - hat[d] * hat[e]);
+            face.M_lambda[d][e] = (d == e ? 1. : 0.) - P;
+            face.M_jump[d][e]   = -b * P;
+          }
+        // dg = (∂g/∂b_n) (dλ_n + β d[[u]]_n) + (∂g/∂s) t̂·d[[u]]_τ, t̂ the
+        // direction of the slip of the step.
+        if (const double slope_n =
+              friction->slip_bound_derivative(i, b_n, slip);
+            slope_n != 0)
+          {
+            face.M_lambda[d][0] = -slope_n * hat[d];
+            face.M_jump[d][0]   = -slope_n * b * hat[d];
+          }
+        if (const double slope_s =
+              friction->slip_bound_slip_derivative(i, b_n, slip);
+            slope_s != 0 && step_slip_norm > 0)
+          for (unsigned int e = 1; e < dim; ++e)
+            face.M_jump[d][e] -=
+              slope_s * hat[d] * step_slip[e] / step_slip_norm;
+      }
+  }
+
+
+
+  template <int dim>
   typename ContactMechanics<dim>::Residual
   ContactMechanics<dim>::residual(const Vector<double> &x,
                                   const double          load,
@@ -262,104 +393,11 @@ namespace PolyFrac
         const Tensor<1, dim>  lambda = Q * face_multiplier(x, i);
         const Tensor<1, dim>  j      = Q * face_jump(x, i);
         const Tensor<1, dim>  j_prev = Q * face_jump(previous_step, i);
-        const Tensor<1, dim>  j_old =
-          friction->slips_by_increments() ? j_prev : Tensor<1, dim>();
-        const double b = beta[i];
-        // The slip of the step and the slip path at x.
-        const Tensor<1, dim> step_slip      = tangential_part(j - j_prev);
-        const double         step_slip_norm = step_slip.norm();
-        const double         slip           = previous_slip[i] + step_slip_norm;
-
-        // b_n, b_τ and the threshold g of §6.
-        const double   b_n = lambda[0] + b * j[0];
-        Tensor<1, dim> b_t;
-        for (unsigned int d = 1; d < dim; ++d)
-          b_t[d] = lambda[d] + b * (j[d] - j_old[d]);
-        const double b_t_norm = b_t.norm();
-        const bool   in_contact =
-          forced ? forced->normal[i] == NormalState::contact : b_n > 0;
-        const double g = friction->slip_bound(i, b_n, slip);
-
-        // Local residual r = λ − (projections) and its generalised
-        // derivatives M_λ = ∂r/∂λ, M_j = ∂r/∂[[u]] (local components).
-        Tensor<1, dim> &r        = face.r;
-        Tensor<2, dim> &M_lambda = face.M_lambda;
-        Tensor<2, dim> &M_jump   = face.M_jump;
-        R.normal[i] = in_contact ? NormalState::contact : NormalState::open;
-        if (in_contact)
-          {
-            r[0]         = lambda[0] - b_n;
-            M_jump[0][0] = -b;
-          }
-        else
-          {
-            r[0]           = lambda[0];
-            M_lambda[0][0] = 1;
-          }
-
-        if (friction->is_free(in_contact))
-          {
-            R.tangential[i] = TangentialState::free;
-            for (unsigned int d = 1; d < dim; ++d)
-              {
-                r[d]           = lambda[d];
-                M_lambda[d][d] = 1;
-              }
-          }
-        else if (forced ? forced->tangential[i] == TangentialState::stick :
-                          b_t_norm <= g)
-          {
-            R.tangential[i] = TangentialState::stick;
-            for (unsigned int d = 1; d < dim; ++d)
-              {
-                r[d]         = lambda[d] - b_t[d];
-                M_jump[d][d] = -b;
-              }
-          }
-        else
-          {
-            // λ_τ = g b_τ/|b_τ|: dP = (g/|b_τ|)(I − b̂ b̂^T) db_τ + b̂ dg. A
-            // forced slip keeps the direction b̂ (P = 0): b_τ may then be
-            // shorter than g.
-            R.tangential[i] = TangentialState::slip;
-            Tensor<1, dim> hat;
-            hat[dim - 1]             = 1;
-            Tensor<1, dim> direction = b_t;
-            if (b_t_norm == 0)
-              {
-                direction    = lambda;
-                direction[0] = 0;
-              }
-            if (direction.norm() > 0)
-              hat = direction / direction.norm();
-            const double slope = forced ? 0. : g / b_t_norm;
-            for (unsigned int d = 1; d < dim; ++d)
-              {
-                r[d] = lambda[d] - g * hat[d];
-                for (unsigned int e = 1; e < dim; ++e)
-                  {
-                    const double P =
-                      slope * ((d == e ? 1. : 0.) - hat[d] * hat[e]);
-                    M_lambda[d][e] = (d == e ? 1. : 0.) - P;
-                    M_jump[d][e]   = -b * P;
-                  }
-                // dg = (∂g/∂b_n) (dλ_n + β d[[u]]_n) + (∂g/∂s) t̂·d[[u]]_τ,
-                // t̂ the direction of the slip of the step.
-                if (const double slope_n =
-                      friction->slip_bound_derivative(i, b_n, slip);
-                    slope_n != 0)
-                  {
-                    M_lambda[d][0] = -slope_n * hat[d];
-                    M_jump[d][0]   = -slope_n * b * hat[d];
-                  }
-                if (const double slope_s =
-                      friction->slip_bound_slip_derivative(i, b_n, slip);
-                    slope_s != 0 && step_slip_norm > 0)
-                  for (unsigned int e = 1; e < dim; ++e)
-                    M_jump[d][e] -=
-                      slope_s * hat[d] * step_slip[e] / step_slip_norm;
-              }
-          }
+        // b_n and |b_τ| of §6, the states and the local linearisation.
+        const auto [b_n, b_t_norm] = linearise_face(
+          i, lambda, j, j_prev, forced, face, R.normal[i], R.tangential[i]);
+        const Tensor<1, dim> &r = face.r;
+        const double          b = beta[i];
 
         complementarity += face.measure * r.norm_square();
         measure += face.measure;

@@ -741,25 +741,8 @@ namespace PolyFrac
     const Timer operator_timer;
     make_reduced_operator(faces, rows, *matrix);
     times.reduced_operator += operator_timer.wall_time();
-    const auto build_amg = [&]() {
-      const Timer amg_timer;
-      amg.reset();
-      amg_matrix = std::move(matrix);
-      amg        = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      initialize_amg(*amg,
-                     *amg_matrix,
-                     dofs,
-                     vertices,
-                     solver.smoother_sweeps,
-                     AMGHierarchy::lean);
-      amg_symmetric = symmetric;
-      amg_structure = structure;
-      malloc_trim(0); // ML's set-up products
-      times.amg_setup += amg_timer.wall_time();
-      ++times.n_amg_setups;
-    };
     if (new_amg)
-      build_amg();
+      build_amg(std::move(matrix), symmetric, structure);
 
     // After the AMG set-up, whose transient sets the peak memory. The band
     // of a symmetric step is factorised once, for this step's operator.
@@ -780,28 +763,14 @@ namespace PolyFrac
       std::tie(krylov.iterations, krylov.converged) = krylov_solve(
         band_preconditioner.get(), *amg_matrix, rhs, solver, enough, y);
     else
-      {
-        // A reused AMG gets at most reused_amg_iterations; if they do not
-        // reach the tolerance it is built again, for this operator, and
-        // the solve starts over. On the 3D Coulomb network at 48^3 GMRES
-        // stalled with the AMG of the last load step.
-        LinearSolverParameters limited = solver;
-        limited.max_iterations =
-          std::min(solver.max_iterations, reused_amg_iterations);
-        std::tie(krylov.iterations, krylov.converged) = krylov_solve(
-          band_preconditioner.get(), *matrix, rhs, limited, enough, y);
-        if (!krylov.converged && limited.max_iterations < solver.max_iterations)
-          {
-            build_amg();
-            if (band_preconditioner)
-              band_preconditioner->replace_amg(*amg);
-            const auto [more, converged] = krylov_solve(
-              band_preconditioner.get(), *amg_matrix, rhs, solver, enough, y);
-            krylov.iterations += more;
-            krylov.converged   = converged;
-            krylov.amg_rebuilt = true;
-          }
-      }
+      solve_with_reused_amg(matrix,
+                            symmetric,
+                            structure,
+                            band_preconditioner.get(),
+                            rhs,
+                            enough,
+                            y,
+                            krylov);
     ++times.n_steps;
     times.n_iterations += krylov.iterations;
     const auto count_the_rest = [&]() {
@@ -815,6 +784,84 @@ namespace PolyFrac
         return krylov;
       }
 
+    recover_step(faces, rows, residual, y, offset, step);
+    count_the_rest();
+    return krylov;
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::build_amg(
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> matrix,
+    const bool                                      symmetric,
+    const std::vector<bool>                        &structure)
+  {
+    const Timer amg_timer;
+    amg.reset();
+    amg_matrix = std::move(matrix);
+    amg        = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    initialize_amg(*amg,
+                   *amg_matrix,
+                   dofs,
+                   vertices,
+                   solver.smoother_sweeps,
+                   AMGHierarchy::lean);
+    amg_symmetric = symmetric;
+    amg_structure = structure;
+    malloc_trim(0); // ML's set-up products
+    times.amg_setup += amg_timer.wall_time();
+    ++times.n_amg_setups;
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::solve_with_reused_amg(
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> &matrix,
+    const bool                                       symmetric,
+    const std::vector<bool>                         &structure,
+    FractureBandPreconditioner                      *band_preconditioner,
+    const Vector<double>                            &rhs,
+    const double                                     enough,
+    Vector<double>                                  &y,
+    KrylovSolve                                     &krylov)
+  {
+    // A reused AMG gets at most reused_amg_iterations; if they do not
+    // reach the tolerance it is built again, for this operator, and the
+    // solve starts over. On the 3D Coulomb network at 48^3 GMRES stalled
+    // with the AMG of the last load step.
+    LinearSolverParameters limited = solver;
+    limited.max_iterations =
+      std::min(solver.max_iterations, reused_amg_iterations);
+    std::tie(krylov.iterations, krylov.converged) =
+      krylov_solve(band_preconditioner, *matrix, rhs, limited, enough, y);
+    if (krylov.converged || limited.max_iterations >= solver.max_iterations)
+      return;
+    build_amg(std::move(matrix), symmetric, structure);
+    if (band_preconditioner)
+      band_preconditioner->replace_amg(*amg);
+    const auto [more, converged] =
+      krylov_solve(band_preconditioner, *amg_matrix, rhs, solver, enough, y);
+    krylov.iterations += more;
+    krylov.converged   = converged;
+    krylov.amg_rebuilt = true;
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::recover_step(
+    const std::vector<FaceLinearisation<dim>> &faces,
+    const std::vector<LocalRows>              &rows,
+    const Vector<double>                      &residual,
+    const Vector<double>                      &y,
+    const Vector<double>                      &offset,
+    Vector<double>                            &step) const
+  {
     // du = Z y + z_0; the kinematic multipliers from the bubble rows
     // |σ| w_b dλ = −(R + A du)_b, then the traction ones dλ̃_T =
     // E d[[u]]~_T + e + C dλ̃_K.
@@ -833,8 +880,6 @@ namespace PolyFrac
           dofs.get_communicator(),
           ArrayView<double>(step.begin() + first, step.size() - first));
       }
-    count_the_rest();
-    return krylov;
   }
 
 

@@ -23,14 +23,9 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_summary import cell_data  # noqa: E402
+from scene_summary import cell_data, meshio_and_numpy  # noqa: E402
 
-try:
-    import meshio
-    import numpy as np
-except ImportError as error:
-    sys.exit(f"{error}: install Debian's python3-meshio "
-             "(apt-get install python3-meshio) and run with /usr/bin/python3")
+meshio, np = meshio_and_numpy()
 
 TOLERANCE = 1e-5
 

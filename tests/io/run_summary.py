@@ -30,16 +30,12 @@ import os
 import re
 import sys
 
-try:
-    import meshio
-    import numpy as np
-except ImportError as error:
-    sys.exit(f"{error}: install Debian's python3-meshio "
-             "(apt-get install python3-meshio) and run with /usr/bin/python3")
-
 program, source, work = sys.argv[1:4]
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_summary import cell_data, NUMBER, fluid_volumes, run_scene  # noqa: E402
+from scene_summary import (  # noqa: E402
+    cell_data, NUMBER, fluid_volumes, run_scene, meshio_and_numpy)
+
+meshio, np = meshio_and_numpy()
 
 
 def run(name, scene, *settings):

@@ -10,6 +10,19 @@ import sys
 NUMBER = r"([-+0-9.eE]+)"
 
 
+def meshio_and_numpy():
+    """The modules meshio and numpy; exits naming Debian's package if they
+    are missing."""
+    try:
+        import meshio
+        import numpy
+    except ImportError as error:
+        sys.exit(f"{error}: install Debian's python3-meshio "
+                 "(apt-get install python3-meshio) and run with "
+                 "/usr/bin/python3")
+    return meshio, numpy
+
+
 def cell_data(mesh, name):
     """The cell data array NAME of a meshio mesh, one row per cell in the
     order of the file (meshio splits it by cell type)."""

@@ -31,14 +31,9 @@ import xml.etree.ElementTree as ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from files_written import files_written  # noqa: E402
-from scene_summary import cell_data  # noqa: E402
+from scene_summary import cell_data, meshio_and_numpy  # noqa: E402
 
-try:
-    import meshio
-    import numpy as np
-except ImportError as error:
-    sys.exit(f"{error}: install Debian's python3-meshio "
-             "(apt-get install python3-meshio) and run with /usr/bin/python3")
+meshio, np = meshio_and_numpy()
 
 # Patch data and points are written as Float32 (relative precision 6e-8);
 # the fields are O(1), so 1e-6 leaves room for the round-off of the solve

@@ -27,16 +27,12 @@ import os
 import re
 import sys
 
-try:
-    import meshio
-    import numpy as np
-except ImportError as error:
-    sys.exit(f"{error}: install Debian's python3-meshio "
-             "(apt-get install python3-meshio) and run with /usr/bin/python3")
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 os.pardir, "io"))
-from scene_summary import cell_data, fluid_volumes, run_scene  # noqa: E402
+from scene_summary import (  # noqa: E402
+    cell_data, fluid_volumes, run_scene, meshio_and_numpy)
+
+meshio, np = meshio_and_numpy()
 
 D_0 = 1e-4
 V_M, K_N = 5e-5, 1e11

@@ -22,16 +22,11 @@ import shutil
 import subprocess
 import sys
 
-try:
-    import meshio
-    import numpy as np
-except ImportError as error:
-    sys.exit(f"{error}: install Debian's python3-meshio "
-             "(apt-get install python3-meshio) and run with /usr/bin/python3")
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 os.pardir, "io"))
-from scene_summary import cell_data  # noqa: E402
+from scene_summary import cell_data, meshio_and_numpy  # noqa: E402
+
+meshio, np = meshio_and_numpy()
 
 SCENE = """set Dimension = 2
 subsection Model

@@ -26,17 +26,14 @@ import csv
 import os
 import sys
 
-try:
-    import meshio
-    import numpy as np
-except ImportError as error:
-    sys.exit(f"{error}: install Debian's python3-meshio "
-             "(apt-get install python3-meshio) and run with /usr/bin/python3")
-
 program, source, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 os.pardir, "io"))
-from scene_summary import cell_data, fluid_volumes, run_scene  # noqa: E402
+from scene_summary import (  # noqa: E402
+    cell_data, fluid_volumes, run_scene, meshio_and_numpy)
+
+meshio, np = meshio_and_numpy()
+
 Q = 2e-5
 
 

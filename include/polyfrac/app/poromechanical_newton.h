@@ -156,6 +156,44 @@ namespace PolyFrac
     void
     make_pattern();
 
+    /** The prescribed pressures of the step of @p data from @p p_before:
+     * all of them held, or the pressure data (Flow::make_constraints()). */
+    void
+    make_pressure_constraints(const FlowStepData   &data,
+                              const Vector<double> &p_before,
+                              const Pressures       pressures);
+
+    /** The unknowns of (@p guess, @p p_guess) with the Dirichlet data at
+     * @p time and the prescribed pressures of the step. */
+    Vector<double>
+    first_iterate(const double                time,
+                  const MechanicalState<dim> &guess,
+                  const Vector<double>       &p_guess);
+
+    /** The increment @p dx of the iterate @p x relative to it: the larger
+     * of (u, s) and the larger of (p, λ), each relative to the larger of
+     * its unknowns and the floors @p displacement_floor, @p
+     * pressure_floor, added. */
+    double
+    relative_increment(const Vector<double> &dx,
+                       const Vector<double> &x,
+                       const double          displacement_floor,
+                       const double          pressure_floor) const;
+
+    /** The multipliers λ_σ of the unknowns @p x, per fracture face. */
+    std::vector<Tensor<1, dim>>
+    multipliers(const Vector<double> &x) const;
+
+    /** The state (@p after: @p before with the displacement, multipliers,
+     * bubbles, contact states @p states and slip path of @p x) and the
+     * pressures @p p_after of the unknowns @p x. */
+    void
+    split(const Vector<double>       &x,
+          const MechanicalState<dim> &before,
+          const ContactStates        &states,
+          MechanicalState<dim>       &after,
+          Vector<double>             &p_after) const;
+
     /** What the iterations of a step share, computed once per step. */
     struct StepStart
     {

@@ -19,6 +19,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PolyFrac
@@ -352,6 +353,41 @@ namespace PolyFrac
       std::vector<TangentialState>        tangential;
       std::vector<FaceLinearisation<dim>> faces;
     };
+    /**
+     * The contact conditions of fracture face @p i at the local multiplier
+     * @p lambda and jump @p j (frame components; @p j_prev the jump at the
+     * last step): the states (@p normal_state, @p tangential_state, or
+     * those of @p forced), the local residual r and its generalised
+     * derivatives in @p face (whose frame and measure are set). Returns
+     * b_n and |b_τ|.
+     */
+    std::pair<double, double>
+    linearise_face(const unsigned int      i,
+                   const Tensor<1, dim>   &lambda,
+                   const Tensor<1, dim>   &j,
+                   const Tensor<1, dim>   &j_prev,
+                   const ContactStates    *forced,
+                   FaceLinearisation<dim> &face,
+                   NormalState            &normal_state,
+                   TangentialState        &tangential_state) const;
+
+    /**
+     * The tangential rows of @p face on a slipping face @p i: λ_τ = g
+     * b_τ/|b_τ| with the slip bound g at (@p b_n, the slip path @p slip),
+     * and their derivatives, those of g in b_n and in the slip of the step
+     * @p step_slip included (@p forced: the direction kept, P = 0).
+     */
+    void
+    linearise_slip(const unsigned int      i,
+                   const Tensor<1, dim>   &lambda,
+                   const double            b_n,
+                   const Tensor<1, dim>   &b_t,
+                   const double            g,
+                   const double            slip,
+                   const Tensor<1, dim>   &step_slip,
+                   const ContactStates    *forced,
+                   FaceLinearisation<dim> &face) const;
+
     /**
      * With @p forced, the faces take the given states instead of those
      * of b_n, b_τ (a slip then keeps its direction: P = 0).

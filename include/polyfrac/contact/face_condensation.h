@@ -278,6 +278,43 @@ namespace PolyFrac
                  const double                          enough,
                  Vector<double>                       &y);
 
+    /** Builds the lean #amg for the reduced operator @p matrix (which it
+     * keeps, as #amg_matrix), symmetric or not (@p symmetric), of the row
+     * structure @p structure. */
+    void
+    build_amg(std::unique_ptr<TrilinosWrappers::SparseMatrix> matrix,
+              const bool                                      symmetric,
+              const std::vector<bool>                        &structure);
+
+    /**
+     * Solves @p matrix @p y = @p rhs with the #amg of an earlier step, at
+     * most reused_amg_iterations; if that does not converge, builds the
+     * AMG again for @p matrix (which it then takes; see build_amg()) and
+     * solves again from zero. @p krylov gets the iterations, whether the
+     * solve converged and whether the AMG was rebuilt.
+     */
+    void
+    solve_with_reused_amg(
+      std::unique_ptr<TrilinosWrappers::SparseMatrix> &matrix,
+      const bool                                       symmetric,
+      const std::vector<bool>                         &structure,
+      FractureBandPreconditioner                      *band_preconditioner,
+      const Vector<double>                            &rhs,
+      const double                                     enough,
+      Vector<double>                                  &y,
+      KrylovSolve                                     &krylov);
+
+    /** The Newton step @p step from the reduced solution @p y: du = Z y +
+     * z_0 (@p offset), then the multipliers of every face (see
+     * recover_multiplier()), summed over the ranks. */
+    void
+    recover_step(const std::vector<FaceLinearisation<dim>> &faces,
+                 const std::vector<LocalRows>              &rows,
+                 const Vector<double>                      &residual,
+                 const Vector<double>                      &y,
+                 const Vector<double>                      &offset,
+                 Vector<double>                            &step) const;
+
     /** @p x = Z @p y (the multiplier entries of @p x are left alone). */
     void
     eliminate(const Vector<double> &y, Vector<double> &x) const;
