@@ -3,8 +3,10 @@
 #define polyfrac_tests_h
 
 #include <polyfrac/app/parameters.h>
+#include <polyfrac/base/exception_message.h>
 
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -85,6 +87,26 @@ namespace PolyFrac::Testing
     AssertThrow(std::abs(value) <= tolerance,
                 dealii::ExcMessage(message.str()));
     return "0 (round-off)";
+  }
+
+  /** Runs @p action, which must throw a message containing @p expected;
+   * prints "refused: " and the message, and throws otherwise. */
+  inline void
+  expect_refused(const std::function<void()> &action,
+                 const std::string           &expected)
+  {
+    std::string message;
+    try
+      {
+        action();
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        message = exception_message(e);
+      }
+    std::cout << "refused: " << message << std::endl;
+    AssertThrow(message.find(expected) != std::string::npos,
+                dealii::ExcMessage("not refused as expected: " + message));
   }
 } // namespace PolyFrac::Testing
 

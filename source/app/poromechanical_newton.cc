@@ -221,17 +221,16 @@ namespace PolyFrac
     const FlowStepData                 &data,
     const Vector<double>               &p_before,
     const Vector<double>               &p,
-    const Vector<double>               &u,
+    const std::vector<Tensor<1, dim>>  &jumps,
     const std::vector<FaceDeformation> &states)
   {
     // The rows of face σ hold −|σ| (d − d^{n−1}) (its volume, on p_{f,σ})
     // and −Δt (H p − h)(d) (cubic law and storage); d depends on the jump
     // [[u]] = (jump matrix) u/|σ| through [[u]]_n and |[[u]]_τ|, and on
     // λ_n = λ·n^+.
-    const types::global_dof_index        p0    = n_u + n_lambda + n_s;
-    const auto                          &jump  = coupling.jump_matrix();
-    const std::vector<Tensor<1, dim>>    jumps = coupling.jumps(u);
-    const ApertureLaw<dim>              &law   = flow.aperture_law();
+    const types::global_dof_index        p0   = n_u + n_lambda + n_s;
+    const auto                          &jump = coupling.jump_matrix();
+    const ApertureLaw<dim>              &law  = flow.aperture_law();
     std::vector<types::global_dof_index> local;
     for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
       {
@@ -351,8 +350,9 @@ namespace PolyFrac
       }
 
     // Mass: the step's data at the apertures of (u, λ).
+    const std::vector<Tensor<1, dim>>  jumps = coupling.jumps(u);
     const std::vector<FaceDeformation> face_states =
-      coupling.face_deformations(u, multipliers(x));
+      coupling.face_deformations(jumps, multipliers(x));
     const std::vector<double> d = flow.apertures(face_states);
     for (unsigned int i = 0; i < d.size(); ++i)
       {
@@ -385,7 +385,7 @@ namespace PolyFrac
         jacobian.add(row, column, -data.time_step * entry->value());
       });
     add_biot_couplings();
-    add_aperture_derivatives(data, start.pressures, p, u, face_states);
+    add_aperture_derivatives(data, start.pressures, p, jumps, face_states);
 
     // Momentum and contact (A, the faces, the Dirichlet rows), last: the
     // Dirichlet rows drop what the couplings put there.

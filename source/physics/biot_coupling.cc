@@ -153,8 +153,18 @@ namespace PolyFrac
     const Vector<double>              &u,
     const std::vector<Tensor<1, dim>> &multipliers) const
   {
-    const std::vector<Tensor<1, dim>> jump_values = jumps(u);
-    std::vector<FaceDeformation>      states(jump_values.size());
+    return face_deformations(jumps(u), multipliers);
+  }
+
+
+
+  template <int dim>
+  std::vector<FaceDeformation>
+  BiotCoupling<dim>::face_deformations(
+    const std::vector<Tensor<1, dim>> &jump_values,
+    const std::vector<Tensor<1, dim>> &multipliers) const
+  {
+    std::vector<FaceDeformation> states(jump_values.size());
     for (unsigned int i = 0; i < states.size(); ++i)
       {
         const Tensor<1, dim> &n = network.normal(i);

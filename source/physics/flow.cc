@@ -163,11 +163,9 @@ namespace PolyFrac
     AssertDimension(states.size(), network.n_fracture_faces());
     std::vector<double> d;
     for (unsigned int i = 0; i < states.size(); ++i)
-      d.push_back(law->aperture(
-        i,
-        FlowParameters::fracture_value(prm.aperture_at_contact,
-                                       network.fracture_faces[i].fracture),
-        states[i]));
+      d.push_back(law->aperture(i,
+                                fracture_property(prm.aperture_at_contact, i),
+                                states[i]));
     return d;
   }
 
@@ -220,10 +218,8 @@ namespace PolyFrac
   Flow<dim>::fracture_conductivity(const unsigned int i,
                                    const double       aperture) const
   {
-    const double d = std::max(aperture, prm.minimum_aperture);
-    const double k_f =
-      FlowParameters::fracture_value(prm.fracture_permeability,
-                                     network.fracture_faces[i].fracture);
+    const double d   = std::max(aperture, prm.minimum_aperture);
+    const double k_f = fracture_property(prm.fracture_permeability, i);
     return k_f > 0 ? k_f * d / prm.viscosity : d * d * d / (12 * prm.viscosity);
   }
 
@@ -233,8 +229,7 @@ namespace PolyFrac
   double
   Flow<dim>::normal_transmissibility(const unsigned int i) const
   {
-    return FlowParameters::fracture_value(prm.normal_transmissibility,
-                                          network.fracture_faces[i].fracture);
+    return fracture_property(prm.normal_transmissibility, i);
   }
 
 
@@ -757,9 +752,7 @@ namespace PolyFrac
       return derivative;
     // C_σ/η = d³/(12 η) (or k_f d/η) and the storage d c_f,
     // differentiated in d.
-    const double k_f =
-      FlowParameters::fracture_value(prm.fracture_permeability,
-                                     network.fracture_faces[i].fracture);
+    const double k_f = fracture_property(prm.fracture_permeability, i);
     const double slope =
       k_f > 0 ? k_f / prm.viscosity : 3 * d * d / (12 * prm.viscosity);
     const FullMatrix<double> &B = fracture_matrices[i];

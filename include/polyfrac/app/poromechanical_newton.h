@@ -245,13 +245,14 @@ namespace PolyFrac
 
     /** Adds the derivatives of the fracture faces' flow rows (volume,
      * cubic law and storage) in their aperture, times those of the
-     * aperture law in the displacement @p u and the multipliers, at the
-     * face states @p states of (@p u, λ) and the pressures @p p. */
+     * aperture law in the displacement and the multipliers, at the jumps
+     * @p jumps and face states @p states of the iterate and the pressures
+     * @p p. */
     void
     add_aperture_derivatives(const FlowStepData                 &data,
                              const Vector<double>               &p_before,
                              const Vector<double>               &p,
-                             const Vector<double>               &u,
+                             const std::vector<Tensor<1, dim>>  &jumps,
                              const std::vector<FaceDeformation> &states);
 
     /** The ranks of the unknowns (MPI_COMM_SELF on one rank). */

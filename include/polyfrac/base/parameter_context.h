@@ -186,6 +186,15 @@ namespace PolyFrac
                          const std::string &range,
                          const std::string &keyword = "");
 
+    /** The value for fracture @p fracture of a list that
+     * per_fracture_doubles() read: its one value, or the fracture's. */
+    inline double
+    per_fracture_value(const std::vector<double> &values,
+                       const unsigned int         fracture)
+    {
+      return values.size() == 1 ? values[0] : values.at(fracture);
+    }
+
     /** The entry @p entry of the current subsection of @p prm that reads
      * `auto` or a positive number: 0 for auto, the number otherwise, and
      * -1 for anything else (a number <= 0 or not a number), which the

@@ -75,6 +75,11 @@ namespace PolyFrac
     face_deformations(const Vector<double>              &u,
                       const std::vector<Tensor<1, dim>> &multipliers) const;
 
+    /** The same, from the jumps @p jumps (jumps()) of the displacement. */
+    std::vector<FaceDeformation>
+    face_deformations(const std::vector<Tensor<1, dim>> &jumps,
+                      const std::vector<Tensor<1, dim>> &multipliers) const;
+
     /** D: (D u)_K = |K| div_K u, one row per cell. */
     const SparseMatrix<double> &
     divergence_matrix() const

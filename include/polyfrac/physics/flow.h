@@ -379,6 +379,16 @@ namespace PolyFrac
       boundary_pressure, boundary_flux;
     /** The aperture law. */
     std::unique_ptr<const ApertureLaw<dim>> law;
+
+    /** The value of the per-fracture property @p values (a FlowParameters
+     * list) for fracture face @p i. */
+    double
+    fracture_property(const std::vector<double> &values,
+                      const unsigned int         i) const
+    {
+      return ParameterParsing::per_fracture_value(
+        values, network.fracture_faces[i].fracture);
+    }
   };
 } // namespace PolyFrac
 

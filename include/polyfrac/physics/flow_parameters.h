@@ -32,15 +32,6 @@ namespace PolyFrac
     void
     parse_parameters(ParameterHandler &prm, const ParameterContext &context);
 
-    /** The value of the per-fracture property @p values (one for all
-     * fractures, or one per fracture) for fracture @p fracture. */
-    static double
-    fracture_value(const std::vector<double> &values,
-                   const unsigned int         fracture)
-    {
-      return values.size() == 1 ? values[0] : values.at(fracture);
-    }
-
     /** Throws, naming the file of @p context and the entry, unless each
      * per-fracture property lists one value or @p n_fractures. */
     void
@@ -71,7 +62,8 @@ namespace PolyFrac
     std::string initial_pressure;
     /** Fracture aperture at contact d_0 ≥ 0, the datum of the aperture
      * law (d_f = d_0 − [u]_n with the default law): one value for all
-     * fractures or one per fracture (fracture_value()). */
+     * fractures or one per fracture (ParameterParsing::per_fracture_value()).
+     */
     std::vector<double> aperture_at_contact;
     /** The aperture laws' entries with the values of the file, declared at
      * the top level: what ApertureLaws::Registry::create() reads. */
@@ -89,11 +81,11 @@ namespace PolyFrac
      * balance stores max(d_f, d_min) c_f ∂_t p_f. */
     double fracture_compressibility;
     /** Fracture normal transmissibility Λ_f ≥ 0, per fracture
-     * (fracture_value()). */
+     * (ParameterParsing::per_fracture_value()). */
     std::vector<double> normal_transmissibility;
     /** Fracture permeability k_f > 0 (m²) per fracture
-     * (fracture_value()): the conductivity k_f d/η along the fracture
-     * instead of the cubic law's d³/(12 η), which 0 stands for. */
+     * (ParameterParsing::per_fracture_value()): the conductivity k_f d/η along
+     * the fracture instead of the cubic law's d³/(12 η), which 0 stands for. */
     std::vector<double> fracture_permeability;
     /** Matrix source h_m, an expression. */
     std::string matrix_source;

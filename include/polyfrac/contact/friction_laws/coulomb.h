@@ -66,8 +66,8 @@ namespace PolyFrac
     double
     friction_coefficient(const unsigned int face) const
     {
-      return coefficients.size() == 1 ? coefficients[0] :
-                                        coefficients[fractures[face]];
+      return ParameterParsing::per_fracture_value(coefficients,
+                                                  fractures[face]);
     }
 
     /** The smallest F of all fractures. */
