@@ -346,14 +346,18 @@ namespace Step1
   // The stabilisation acts on each component alike, so
   // LocalReconstruction::stabilisation() returns the scalar matrix S_K
   // over the local unknowns t, r; it couples (t, i) with (r, j) only for
-  // i = j, scaled by 2μ + λ_L as in the paper.
+  // i = j, scaled by 2μ + λ_L as in the paper. The Lamé coefficients are
+  // those of the polytope's region (Material/Lame mu may be given per
+  // region; step-1's file gives one value).
   template <int dim>
   FullMatrix<double>
   BubbleVEMElasticity<dim>::local_matrix(
     const LocalReconstruction<dim> &local) const
   {
-    const double mu = prm.mechanics.lame_mu, lambda = prm.mechanics.lame_lambda;
-    const unsigned int n_local = local.n_local();
+    const types::material_id region = geometry.mesh.cells[local.cell].region;
+    const double             mu     = prm.mechanics.lame_mu(region),
+                 lambda             = prm.mechanics.lame_lambda(region);
+    const unsigned int n_local      = local.n_local();
 
     std::vector<SymmetricTensor<2, dim>> strain(dim * n_local);
     for (unsigned int t = 0; t < n_local; ++t)

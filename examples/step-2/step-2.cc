@@ -388,7 +388,8 @@ namespace Step2
   // @sect4{ActiveSetCheck::evaluate}
 
   // This is doc/scheme.md §6 written out for one face. The default β_σ is
-  // (2μ + λ_L)/h_σ with h_σ the diameter of the face; a positive
+  // (2μ + λ_L)/h_σ with h_σ the diameter of the face (and 2μ + λ_L of the
+  // stiffer of its two polytopes); a positive
   // `Contact/Complementarity parameter` replaces it. Then b_n and b_τ,
   // the threshold g, the states by the four cases of the introduction,
   // and the residual R_σ = λ_σ − P(b_σ). The law says whether a face
@@ -407,11 +408,18 @@ namespace Step2
     FaceConditions<dim> c;
     c.lambda = Q * state.multipliers[i];
     c.jump   = Q * state.jump_value(geometry, dofs, network, i);
-    c.beta =
-      beta_factor * (prm.contact.beta > 0 ?
-                       prm.contact.beta :
-                       (2 * prm.mechanics.lame_mu + prm.mechanics.lame_lambda) /
-                         face.diameter);
+    // 2μ + λ_L of the stiffer side, where the two sides' regions differ.
+    double modulus = 0;
+    for (const unsigned int K : {network.fracture_faces[i].plus_cell,
+                                 network.fracture_faces[i].minus_cell})
+      {
+        const types::material_id region = geometry.mesh.cells[K].region;
+        modulus                         = std::max(modulus,
+                           2 * prm.mechanics.lame_mu(region) +
+                             prm.mechanics.lame_lambda(region));
+      }
+    c.beta = beta_factor * (prm.contact.beta > 0 ? prm.contact.beta :
+                                                   modulus / face.diameter);
 
     c.b_n = c.lambda[0] + c.beta * c.jump[0];
     for (unsigned int d = 1; d < dim; ++d)

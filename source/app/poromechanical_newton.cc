@@ -114,6 +114,7 @@ namespace PolyFrac
                              s0,
                              p0,
                              true,
+                             flow.biot_coefficients(),
                              [&](const auto row, const auto p_K, double) {
                                pattern.add(row, p_K);
                                pattern.add(p_K, row);
@@ -185,20 +186,20 @@ namespace PolyFrac
   PoromechanicalNewton<dim>::add_biot_couplings()
   {
     const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
-    const double                  b = prm.flow.biot_coefficient;
     for_each_volume_coupling(coupling,
                              bubbles,
                              pressure_dofs,
                              s0,
                              p0,
                              true,
+                             flow.biot_coefficients(),
                              [&](const auto   row,
                                  const auto   p_K,
                                  const double value) {
                                if (!own_cell_pressure[p_K - p0])
                                  return;
-                               jacobian.add(row, p_K, -b * value);
-                               jacobian.add(p_K, row, -b * value);
+                               jacobian.add(row, p_K, -value);
+                               jacobian.add(p_K, row, -value);
                              });
     // Momentum: +Jᵀ p_f (the fracture volume: add_aperture_derivatives()).
     const auto &J = coupling.normal_jump_matrix();
@@ -320,7 +321,6 @@ namespace PolyFrac
                                        Vector<double>       &residual)
   {
     const types::global_dof_index s0 = n_u + n_lambda, p0 = s0 + n_s;
-    const double                  b = prm.flow.biot_coefficient;
     Vector<double>                u(n_u), s(n_s), p(n_p);
     std::copy(x.begin(), x.begin() + n_u, u.begin());
     std::copy(x.begin() + s0, x.begin() + p0, s.begin());
@@ -331,8 +331,9 @@ namespace PolyFrac
 
     // Bubbles: A_su u + A_ss s − F_s − b D_sᵀ p_m; their pull A_us s joins
     // the pressure load of the momentum rows.
-    Vector<double> load =
-      coupling.pressure_load(p_m, b, flow.fracture_pressures(p));
+    Vector<double> load = coupling.pressure_load(p_m,
+                                                 flow.biot_coefficients(),
+                                                 flow.fracture_pressures(p));
     if (bubbles)
       {
         Vector<double> pull(n_u), As(n_s);
@@ -342,7 +343,8 @@ namespace PolyFrac
           {
             const auto &block = bubbles->cell_block(c);
             for (unsigned int j = 0; j < block.bubbles.size(); ++j)
-              As(block.bubbles[j]) -= b * block.divergence[j] * p_m[c];
+              As(block.bubbles[j]) -=
+                flow.biot_coefficient(c) * block.divergence[j] * p_m[c];
           }
         for (types::global_dof_index k = 0; k < n_s; ++k)
           residual(s0 + k) = As(k) - start.bubble_loads(k);
@@ -376,7 +378,7 @@ namespace PolyFrac
       residual(p0 + k) = -data.time_step * Hp(k);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
       residual(p0 + pressure_dofs.cell_dof(c)) -=
-        b * (volume[c] - start.volume[c]);
+        flow.biot_coefficient(c) * (volume[c] - start.volume[c]);
     for_each_block_entry(
       flow_matrix,
       n_p,

@@ -104,9 +104,7 @@ namespace PolyFrac
                     edges,
                     pressure_dofs,
                     flow)
-    , fixed_stress_coefficient(
-        std::pow(prm.flow.biot_coefficient, 2) /
-        (prm.mechanics.lame_lambda + 2 * prm.mechanics.lame_mu / dim))
+    , fixed_stress_coefficients(make_fixed_stress_coefficients())
     , pressure(flow.initial_pressure())
   {
     if (discretization.dofs->is_distributed())
@@ -300,14 +298,30 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::vector<double>
+  PoromechanicsModel<dim>::make_fixed_stress_coefficients() const
+  {
+    std::vector<double> L(discretization.mesh->n_cells());
+    for (unsigned int c = 0; c < L.size(); ++c)
+      L[c] = std::pow(flow.biot_coefficient(c), 2) /
+             (elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c) / dim);
+    return L;
+  }
+
+
+
+  template <int dim>
   typename PoromechanicsModel<dim>::Scales
   PoromechanicsModel<dim>::scales(const Vector<double> &p) const
   {
     double stress = std::max(elasticity.load_scale(), p.linfty_norm());
     for (const Tensor<1, dim> &lambda : state.multipliers)
       stress = std::max(stress, lambda.norm());
-    const double modulus =
-      prm.mechanics.lame_lambda + 2 * prm.mechanics.lame_mu;
+    // The stiffest region's λ + 2μ: the smaller displacement scale.
+    double modulus = 0;
+    for (unsigned int c = 0; c < discretization.mesh->n_cells(); ++c)
+      modulus = std::max(modulus,
+                         elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c));
     const auto  &geometry     = *discretization.geometry;
     const double floor        = 1e-6;
     const double displacement = stress * geometry.domain_diameter() / modulus;
@@ -333,7 +347,7 @@ namespace PolyFrac
       loaded,
       coupling.pressure_load(
         {},
-        0.,
+        {},
         std::vector<double>(discretization.network->n_fracture_faces(), 1.)));
     Vector<double> response = loaded.displacement;
     response -= unloaded.displacement;
@@ -359,13 +373,15 @@ namespace PolyFrac
   std::vector<double>
   PoromechanicsModel<dim>::increment_mobility(const double time_step) const
   {
-    const double b = prm.flow.biot_coefficient;
-    const double delta =
-      prm.flow.pressure_stabilisation * b * b /
-      ((prm.mechanics.lame_lambda + 2 * prm.mechanics.lame_mu) * time_step);
     std::vector<double> s(discretization.geometry->cells.size());
     for (unsigned int c = 0; c < s.size(); ++c)
-      s[c] = delta * std::pow(discretization.geometry->cells[c].diameter, 2);
+      {
+        const double b = flow.biot_coefficient(c);
+        const double delta =
+          prm.flow.pressure_stabilisation * b * b /
+          ((elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c)) * time_step);
+        s[c] = delta * std::pow(discretization.geometry->cells[c].diameter, 2);
+      }
     return s;
   }
 
@@ -381,8 +397,6 @@ namespace PolyFrac
                                              const Vector<double> &p_k) const
   {
     FlowStepData data = flow.flow_step_data(t, time_step);
-    const double b    = prm.flow.biot_coefficient;
-    const double L    = fixed_stress_coefficient;
 
     // Cells: |K| [(1/M)(p − p^{n−1}) + b div_K(u^k − u^{n−1})
     //             + L (p − p^k)] / Δt + fluxes = |K| h_m.
@@ -395,6 +409,8 @@ namespace PolyFrac
     for (unsigned int c = 0; c < data.storage.size(); ++c)
       {
         const double measure = discretization.geometry->cells[c].measure;
+        const double b       = flow.biot_coefficient(c);
+        const double L       = fixed_stress_coefficients[c];
         data.storage[c] += L;
         data.cell_rhs[c] =
           (L * (pk[c] - p0[c]) - b * (volume_k[c] - volume_0[c]) / measure) /
@@ -436,7 +452,7 @@ namespace PolyFrac
                                            MechanicalState<dim>       &result)
   {
     Vector<double> load = coupling.pressure_load(flow.cell_pressures(p),
-                                                 prm.flow.biot_coefficient,
+                                                 flow.biot_coefficients(),
                                                  flow.fracture_pressures(p));
     if (bubbles)
       {
@@ -566,7 +582,7 @@ namespace PolyFrac
       if (bubbles)
         s = bubbles->bubbles_at_rest(u_k.displacement,
                                      p_cells,
-                                     prm.flow.biot_coefficient,
+                                     flow.biot_coefficients(),
                                      bubble_loads);
       p = p_k;
     };
@@ -956,10 +972,10 @@ namespace PolyFrac
       {
         porosity[c] =
           prm.flow.initial_porosity +
-          prm.flow.biot_coefficient * (volume[c] - initial_volume[c]) /
+          flow.biot_coefficient(c) * (volume[c] - initial_volume[c]) /
             discretization.geometry->cells[c].measure +
-          (p[c] - initial_cell_pressure[c]) * prm.flow.inverse_biot_modulus;
-        biot_pressure[c] = prm.flow.biot_coefficient * p[c];
+          (p[c] - initial_cell_pressure[c]) * flow.inverse_biot_modulus(c);
+        biot_pressure[c] = flow.biot_coefficient(c) * p[c];
       }
     return matrix_patches<dim>(
       *discretization.geometry,

@@ -68,11 +68,20 @@ namespace PolyFrac
     double scale_min = std::numeric_limits<double>::max(), scale_max = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
       {
-        const auto  &face = geometry.faces[network.fracture_faces[i].face];
-        const double scale_aware =
-          (2 * mechanics.lame_mu + mechanics.lame_lambda) / face.diameter;
-        scale_min = std::min(scale_min, scale_aware);
-        scale_max = std::max(scale_max, scale_aware);
+        const unsigned int f = network.fracture_faces[i].face;
+        // The stiffer side's 2μ + λ where the regions differ.
+        double modulus = 0;
+        for (const unsigned int c : geometry.mesh.faces[f].cells)
+          if (c != PolytopalMesh<dim>::invalid)
+            {
+              const types::material_id region = geometry.mesh.cells[c].region;
+              modulus                         = std::max(modulus,
+                                 2 * mechanics.lame_mu(region) +
+                                   mechanics.lame_lambda(region));
+            }
+        const double scale_aware = modulus / geometry.faces[f].diameter;
+        scale_min                = std::min(scale_min, scale_aware);
+        scale_max                = std::max(scale_max, scale_aware);
         beta.push_back(prm.beta > 0 ? prm.beta : scale_aware);
       }
     // The solution does not depend on β, but the contact states are decided

@@ -163,6 +163,7 @@ namespace PolyFrac
     const bool                       from_gmsh = gmsh_as_read != nullptr;
     const std::vector<Fracture<dim>> fractures =
       fractures_from<dim>(prm.fractures);
+    MeshBuilder::assign_regions(prm.mesh, triangulation);
     mesh = std::make_unique<PolytopalMesh<dim>>(
       PolytopalMesh<dim>::from_triangulation(triangulation));
 

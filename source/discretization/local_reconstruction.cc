@@ -14,6 +14,7 @@ namespace PolyFrac
     , centroid(geometry.cells[cell].centroid)
     , measure(geometry.cells[cell].measure)
     , diameter(geometry.cells[cell].diameter)
+    , cell(cell)
   {
     for (const unsigned int v : geometry.mesh.cells[cell].vertices)
       node_points.push_back(geometry.mesh.vertices[v]);

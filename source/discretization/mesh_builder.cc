@@ -176,8 +176,30 @@ namespace PolyFrac
         {
           GridGenerator::subdivided_hyper_rectangle(
             tria, subdivisions, lower, upper, true);
+          // Colorizing numbers the cells by octant too: a box is region 0
+          // until Mesh/Region boxes says otherwise.
+          for (const auto &cell : tria.active_cell_iterators())
+            cell->set_material_id(0);
           tria.refine_global(n_refinements);
         }
+    }
+
+
+
+    template <int dim>
+    void
+    assign_regions(const MeshParameters &prm, Triangulation<dim> &tria)
+    {
+      for (const auto &box : prm.region_boxes)
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            const Point<dim> c      = cell->center();
+            bool             inside = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              inside = inside && c[d] >= box.lower[d] && c[d] <= box.upper[d];
+            if (inside)
+              cell->set_material_id(box.id);
+          }
     }
 
 
@@ -335,6 +357,10 @@ namespace PolyFrac
 
 
 
+    template void
+    assign_regions(const MeshParameters &, Triangulation<2> &);
+    template void
+    assign_regions(const MeshParameters &, Triangulation<3> &);
     template void
     make_box(const MeshParameters &, const unsigned int, Triangulation<2> &);
     template void

@@ -282,7 +282,7 @@ namespace PolyFrac
                                                                    K);
                 values = state->local_values(dofs, K);
                 const Tensor<2, dim> sigma =
-                  elasticity->stress(local->gradient(values));
+                  elasticity->stress(K, local->gradient(values));
                 const Tensor<2, dim> total =
                   sigma +
                   elasticity->initial_stress_value(geometry.cells[K].centroid) -

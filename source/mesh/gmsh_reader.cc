@@ -114,11 +114,13 @@ namespace PolyFrac
       return name;
     }
 
-    /** A gmsh element: its type and its node tags in gmsh's order. */
+    /** A gmsh element: its type, its node tags in gmsh's order and its
+     * element tag. */
     struct Element
     {
       int                      type;
       std::vector<std::size_t> nodes;
+      std::size_t              tag;
     };
 
     /**
@@ -154,12 +156,13 @@ namespace PolyFrac
               {types[t],
                std::vector<std::size_t>(node_tags[t].begin() + e * n_nodes,
                                         node_tags[t].begin() +
-                                          (e + 1) * n_nodes)});
+                                          (e + 1) * n_nodes),
+               element_tags[t][e]});
         }
       return elements;
     }
 
-    /** The (dim-1)-dimensional elements of physical group @p tag. */
+    /** The elements of dimension @p element_dim of physical group @p tag. */
     std::vector<Element>
     elements_of_physical_group(const int          element_dim,
                                const int          tag,
@@ -312,6 +315,35 @@ namespace PolyFrac
       });
     }
 
+    /**
+     * The region of each cell of dimension @p dim that lies in a physical
+     * group of that dimension (a physical volume, a physical surface in
+     * 2D): the group's tag, by element tag. Throws naming @p file_name if
+     * a cell lies in two groups.
+     */
+    std::map<std::size_t, types::material_id>
+    cell_regions(const int dim, const std::string &file_name)
+    {
+      gmsh::vectorpair groups;
+      gmsh::model::getPhysicalGroups(groups, dim);
+      std::map<std::size_t, types::material_id> regions;
+      for (const auto &[group_dim, tag] : groups)
+        for (const Element &element :
+             elements_of_physical_group(group_dim, tag, file_name))
+          {
+            const auto [it, inserted] = regions.emplace(element.tag, tag);
+            AssertThrow(inserted || it->second == types::material_id(tag),
+                        ExcMessage("The gmsh mesh <" + file_name +
+                                   ">: element " + std::to_string(element.tag) +
+                                   " lies in the physical groups " +
+                                   std::to_string(it->second) + " and " +
+                                   std::to_string(tag) + " of dimension " +
+                                   std::to_string(dim) +
+                                   ": a cell belongs to one region."));
+          }
+      return regions;
+    }
+
     /** The coordinates of the vertices (the nodes of the cells). */
     template <int dim>
     std::vector<Point<dim>>
@@ -345,14 +377,16 @@ namespace PolyFrac
     /**
      * Creates @p tria from the gmsh cells: deal.II vertex order, positive
      * measure (gmsh orients a cell by its entity) and, for hypercubes,
-     * consistently oriented lines.
+     * consistently oriented lines; each cell's material id is its region
+     * in @p regions (0 if it has none).
      */
     template <int dim>
     void
-    create_cells(const std::vector<Element>    &elements,
-                 const VertexNumbering         &numbering,
-                 const std::vector<Point<dim>> &vertices,
-                 Triangulation<dim>            &tria)
+    create_cells(const std::vector<Element>                      &elements,
+                 const std::map<std::size_t, types::material_id> &regions,
+                 const VertexNumbering                           &numbering,
+                 const std::vector<Point<dim>>                   &vertices,
+                 Triangulation<dim>                              &tria)
     {
       std::vector<CellData<dim>> cells;
       cells.reserve(elements.size());
@@ -364,6 +398,8 @@ namespace PolyFrac
           CellData<dim> cell(element.nodes.size());
           for (unsigned int i = 0; i < element.nodes.size(); ++i)
             cell.vertices[i] = numbering(element.nodes[deal_ii_to_gmsh[i]]);
+          const auto region = regions.find(element.tag);
+          cell.material_id  = region == regions.end() ? 0 : region->second;
           all_hypercubes =
             all_hypercubes &&
             element.nodes.size() == GeometryInfo<dim>::vertices_per_cell;
@@ -558,7 +594,8 @@ namespace PolyFrac
     const VertexNumbering         numbering(cells);
     const std::vector<Point<dim>> vertices =
       read_vertices<dim>(numbering, in_file);
-    create_cells(cells, numbering, vertices, tria);
+    create_cells(
+      cells, cell_regions(dim, file_name), numbering, vertices, tria);
 
     gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups, dim - 1);

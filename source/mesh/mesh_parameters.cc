@@ -107,6 +107,20 @@ namespace PolyFrac
                       "gmsh mesh (.msh or .geo) for Source = gmsh; a relative "
                       "path is taken from the directory of the parameter "
                       "file.");
+    prm.declare_entry(
+      "Region boxes",
+      "",
+      Patterns::Anything(),
+      "Closed boxes <lower : upper; lower : upper; ...>: the cells whose "
+      "centre lies in box i belong to region <Region box ids>[i] (a later "
+      "box wins where boxes overlap). Every other cell keeps its region: "
+      "0 in a generated box, its physical volume (physical surface in 2D) "
+      "in a gmsh mesh. Material, Biot and flow properties may be given per "
+      "region (<region: value, ...>).");
+    prm.declare_entry("Region box ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 65535)),
+                      "The region of each of the Region boxes.");
     prm.leave_subsection();
   }
 
@@ -184,6 +198,7 @@ namespace PolyFrac
     random_seed        = prm.get_integer("Random seed");
     cells_per_polytope = prm.get_integer("Cells per polytope");
     file_name          = prm.get("File name");
+    read_region_boxes(prm, where, context.dim);
     prm.leave_subsection();
     AssertThrow(source == MeshSource::gmsh || file_name.empty(),
                 ExcMessage(
@@ -204,6 +219,48 @@ namespace PolyFrac
         prm.enter_subsection("Mesh");
         prm.set("File name", ParameterParsing::absolute_path(file_name));
         prm.leave_subsection();
+      }
+  }
+
+
+
+  void
+  MeshParameters::read_region_boxes(ParameterHandler  &prm,
+                                    const std::string &where,
+                                    const unsigned int dim)
+  {
+    const auto boxes =
+      ParameterParsing::parse_point_lists(prm.get("Region boxes"),
+                                          dim,
+                                          where + " <Region boxes>");
+    const std::vector<unsigned int> ids =
+      ParameterParsing::read_ids<unsigned int>(prm.get("Region box ids"),
+                                               "Region box ids",
+                                               where);
+    AssertThrow(
+      boxes.size() == ids.size(),
+      ExcMessage(where + ": <Region boxes> = " + prm.get("Region boxes") +
+                 " gives " + std::to_string(boxes.size()) +
+                 " boxes, but <Region box ids> = " + prm.get("Region box ids") +
+                 " gives " + std::to_string(ids.size()) +
+                 " ids: give one region id per box."));
+    region_boxes.clear();
+    for (unsigned int i = 0; i < boxes.size(); ++i)
+      {
+        AssertThrow(boxes[i].size() == 2,
+                    ExcMessage(where +
+                               ": <Region boxes> = " + prm.get("Region boxes") +
+                               ": box " + std::to_string(i) +
+                               " must read <lower corner : upper corner>."));
+        for (unsigned int d = 0; d < 3; ++d)
+          AssertThrow(boxes[i][0][d] <= boxes[i][1][d],
+                      ExcMessage(where + ": <Region boxes> = " +
+                                 prm.get("Region boxes") + ": box " +
+                                 std::to_string(i) +
+                                 " has its lower corner above its upper one "
+                                 "in direction " +
+                                 std::to_string(d) + "."));
+        region_boxes.push_back({boxes[i][0], boxes[i][1], ids[i]});
       }
   }
 

@@ -117,6 +117,7 @@ namespace PolyFrac
         FineCell          &fine = mesh.fine_cells[c];
         fine.type               = cell->reference_cell();
         fine.polytope           = c;
+        mesh.cells[c].region    = cell->material_id();
         for (const unsigned int v : cell->vertex_indices())
           fine.vertices.push_back(cell->vertex_index(v));
         const Point<dim> cell_center = cell->center();
@@ -189,7 +190,9 @@ namespace PolyFrac
         std::iota(root.begin(), root.end(), 0u);
         for (unsigned int f = 0; f < n_faces(); ++f)
           if (!faces[f].at_boundary() && !keep_face[f] &&
-              part[faces[f].cells[0]] == part[faces[f].cells[1]])
+              part[faces[f].cells[0]] == part[faces[f].cells[1]] &&
+              cells[faces[f].cells[0]].region ==
+                cells[faces[f].cells[1]].region)
             root[find(faces[f].cells[0])] = find(faces[f].cells[1]);
         changed = false;
         for (unsigned int f = 0; f < n_faces(); ++f)
@@ -210,6 +213,8 @@ namespace PolyFrac
     PolytopalMesh<dim> coarse;
     coarse.vertices = vertices;
     coarse.cells.resize(n_new);
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      coarse.cells[new_index[find(c)]].region = cells[c].region;
     coarse.fine_cells = fine_cells;
     for (FineCell &fine : coarse.fine_cells)
       fine.polytope = new_index[find(fine.polytope)];
@@ -251,6 +256,18 @@ namespace PolyFrac
                                         cell.vertices.end()),
                             cell.vertices.end());
       }
+  }
+
+
+
+  template <int dim>
+  std::set<types::material_id>
+  PolytopalMesh<dim>::regions() const
+  {
+    std::set<types::material_id> result;
+    for (const Cell &cell : cells)
+      result.insert(cell.region);
+    return result;
   }
 
 

@@ -79,14 +79,16 @@ namespace PolyFrac
   Vector<double>
   BiotCoupling<dim>::pressure_load(
     const std::vector<double> &cell_pressure,
-    const double               biot_coefficient,
+    const std::vector<double> &biot_coefficients,
     const std::vector<double> &fracture_pressure) const
   {
     Vector<double> load(divergence.n());
     if (!cell_pressure.empty())
       {
-        Vector<double> p(cell_pressure.begin(), cell_pressure.end());
-        p *= biot_coefficient;
+        AssertDimension(biot_coefficients.size(), cell_pressure.size());
+        Vector<double> p(cell_pressure.size());
+        for (unsigned int c = 0; c < p.size(); ++c)
+          p(c) = biot_coefficients[c] * cell_pressure[c];
         divergence.Tvmult_add(load, p);
       }
     if (!fracture_pressure.empty() && network.n_fracture_faces() > 0)

@@ -59,6 +59,7 @@ namespace PolyFrac
                              n_u,
                              n_u + n_s,
                              all,
+                             flow.biot_coefficients(),
                              [&](const auto row, const auto p_K, double) {
                                pattern.add(row, p_K);
                                pattern.add(p_K, row);
@@ -135,18 +136,18 @@ namespace PolyFrac
         elasticity.assemble_operator(matrix, unused);
       }
     bubbles.add_stiffness(matrix, n_u, all);
-    const double b = flow.parameters().biot_coefficient;
     for_each_volume_coupling(coupling,
                              &bubbles,
                              pressure_dofs,
                              n_u,
                              n_u + n_s,
                              all,
+                             flow.biot_coefficients(),
                              [&](const auto   row,
                                  const auto   p_K,
                                  const double value) {
-                               matrix.add(row, p_K, -b * value);
-                               matrix.add(p_K, row, -b * value);
+                               matrix.add(row, p_K, -value);
+                               matrix.add(p_K, row, -value);
                              });
     const double dt = data.time_step;
     for_each_block_entry(flow_matrix,
@@ -358,13 +359,13 @@ namespace PolyFrac
                                 const MechanicalState<dim> &before,
                                 Vector<double>             &rhs) const
   {
-    const double              b = flow.parameters().biot_coefficient;
     const std::vector<double> bubble_volume =
       bubbles.volume_changes(before.face_bubbles);
     for (unsigned int i = 0; i < n_p; ++i)
       rhs(n_u + n_s + i) -= data.time_step * flow_rhs(i);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-      rhs(n_u + n_s + pressure_dofs.cell_dof(c)) -= b * bubble_volume[c];
+      rhs(n_u + n_s + pressure_dofs.cell_dof(c)) -=
+        flow.biot_coefficient(c) * bubble_volume[c];
   }
 
 
@@ -409,11 +410,11 @@ namespace PolyFrac
     for (unsigned int j = 0; j < n_s; ++j)
       rhs(n_u + j) = s_load(j);
     add_mass_rhs(data, flow_rhs, before, rhs);
-    const double              b = flow.parameters().biot_coefficient;
     const std::vector<double> volume =
       coupling.volume_changes(before.displacement);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-      rhs(n_u + n_s + pressure_dofs.cell_dof(c)) -= b * volume[c];
+      rhs(n_u + n_s + pressure_dofs.cell_dof(c)) -=
+        flow.biot_coefficient(c) * volume[c];
     const Vector<double> x = solve(rhs);
 
     after = before;

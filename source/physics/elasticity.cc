@@ -55,7 +55,12 @@ namespace PolyFrac
                                     dim,
                                     context.constants))
     , initial_stress(make_initial_stress(0.))
-  {}
+  {
+    const std::set<types::material_id> regions = geometry.mesh.regions();
+    const std::string                  where = context.where("Material") + ": ";
+    mechanics.lame_lambda.check_regions(regions, where, "Lame lambda");
+    mechanics.lame_mu.check_regions(regions, where, "Lame mu");
+  }
 
 
 
@@ -198,9 +203,9 @@ namespace PolyFrac
   FullMatrix<double>
   Elasticity<dim>::local_stiffness(const LocalReconstruction<dim> &local) const
   {
-    const double       mu = mechanics.lame_mu, lambda = mechanics.lame_lambda;
-    const unsigned int n       = local.n_local();
-    const auto        &G       = local.gradient_coefficients;
+    const double mu = lame_mu(local.cell), lambda = lame_lambda(local.cell);
+    const unsigned int       n = local.n_local();
+    const auto              &G = local.gradient_coefficients;
     const FullMatrix<double> S = local.stabilisation();
     FullMatrix<double>       A(dim * n, dim * n);
     // For u = e_i G_t-shaped and v = e_j G_r-shaped:
@@ -695,12 +700,12 @@ namespace PolyFrac
 
   template <int dim>
   Tensor<2, dim>
-  Elasticity<dim>::stress(const Tensor<2, dim> &gradient) const
+  Elasticity<dim>::stress(const unsigned int    cell,
+                          const Tensor<2, dim> &gradient) const
   {
     const Tensor<2, dim> strain = 0.5 * (gradient + transpose(gradient));
-    return 2 * mechanics.lame_mu * strain + mechanics.lame_lambda *
-                                              trace(gradient) *
-                                              unit_symmetric_tensor<dim>();
+    return 2 * lame_mu(cell) * strain +
+           lame_lambda(cell) * trace(gradient) * unit_symmetric_tensor<dim>();
   }
 
 
@@ -732,7 +737,7 @@ namespace PolyFrac
     for (unsigned int K = 0; K < n; ++K)
       {
         const LocalReconstruction<dim> local(geometry, dofs, network, K);
-        sigma[K]      = stress(local.gradient(state.local_values(dofs, K)));
+        sigma[K]      = stress(K, local.gradient(state.local_values(dofs, K)));
         double volume = 0;
         for (const QuadraturePoint<dim> &q : geometry.quadrature(K))
           {

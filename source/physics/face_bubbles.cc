@@ -208,7 +208,7 @@ namespace PolyFrac
   Vector<double>
   FaceBubbles<dim>::bubbles_at_rest(const Vector<double>      &u,
                                     const std::vector<double> &p,
-                                    const double               b,
+                                    const std::vector<double> &b,
                                     const Vector<double>      &loads)
   {
     if (n_bubbles() == 0)
@@ -228,7 +228,7 @@ namespace PolyFrac
     rhs -= coupled;
     for (unsigned int c = 0; c < blocks.size(); ++c)
       for (unsigned int j = 0; j < blocks[c].bubbles.size(); ++j)
-        rhs(blocks[c].bubbles[j]) += b * p[c] * blocks[c].divergence[j];
+        rhs(blocks[c].bubbles[j]) += b[c] * p[c] * blocks[c].divergence[j];
     Vector<double> s(n_bubbles());
     bubble_factorisation.vmult(s, rhs);
     return s;

@@ -92,16 +92,23 @@ namespace PolyFrac
                                " (generated boxes: 0/1 at x min/max, 2/3 at "
                                "y, 4/5 at z)."));
 
-    const auto   permeability = make_expression<dim>("Flow/Permeability",
-                                                   prm.permeability,
-                                                   1,
-                                                   context.constants);
+    check_regions();
+    const auto   permeability = prm.permeability_per_region ?
+                                  nullptr :
+                                  make_expression<dim>("Flow/Permeability",
+                                                     prm.permeability,
+                                                     1,
+                                                     context.constants);
     const double alpha =
       prm.stabilisation > 0 ? prm.stabilisation : std::sqrt(dim);
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        const Point<dim> &x = geometry.cells[c].centroid;
-        const double      k = permeability->value(x);
+        const Point<dim>        &x      = geometry.cells[c].centroid;
+        const types::material_id region = mesh.cells[c].region;
+        const double             k = permeability ? permeability->value(x) :
+                                                    (*prm.permeability_per_region)(region);
+        cell_biot_coefficient.push_back(prm.biot_coefficient(region));
+        cell_inverse_biot_modulus.push_back(prm.inverse_biot_modulus(region));
         if (k < 0)
           {
             std::ostringstream what;
@@ -138,13 +145,31 @@ namespace PolyFrac
 
 
   template <int dim>
+  void
+  Flow<dim>::check_regions() const
+  {
+    const std::set<types::material_id> regions = geometry.mesh.regions();
+    const std::string                  where   = context.where("Flow") + ": ";
+    prm.biot_coefficient.check_regions(regions, where, "Biot coefficient");
+    prm.inverse_biot_modulus.check_regions(regions,
+                                           where,
+                                           "Inverse Biot modulus");
+    if (prm.permeability_per_region)
+      prm.permeability_per_region->check_regions(regions,
+                                                 where,
+                                                 "Permeability");
+  }
+
+
+
+  template <int dim>
   FlowStepData
   Flow<dim>::flow_step_data(const double time, const double time_step) const
   {
     FlowStepData data;
     data.time      = time;
     data.time_step = time_step;
-    data.storage.assign(geometry.mesh.n_cells(), prm.inverse_biot_modulus);
+    data.storage   = cell_inverse_biot_modulus;
     data.cell_rhs.assign(geometry.mesh.n_cells(), 0.);
     data.apertures =
       apertures(std::vector<FaceDeformation>(network.n_fracture_faces()));
@@ -263,7 +288,7 @@ namespace PolyFrac
   Flow<dim>::active(const unsigned int c, const FlowStepData &data) const
   {
     return cell_mobility[c] > 0 || data.storage[c] > 0 ||
-           (data.volume_coupled && prm.biot_coefficient != 0);
+           (data.volume_coupled && cell_biot_coefficient[c] != 0);
   }
 
 

@@ -15,7 +15,9 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Matrix permeability K_m >= 0 (isotropic, m^2), an "
                       "expression in x, y (, z) evaluated at the cell "
-                      "centroids. 0 everywhere with Inverse Biot modulus = 0: "
+                      "centroids, or <region: value, ...> for every region "
+                      "of the mesh (Mesh/Region boxes, gmsh physical "
+                      "volumes). 0 everywhere with Inverse Biot modulus = 0: "
                       "the matrix is not solved for (fracture flow alone).");
     prm.declare_entry("Viscosity",
                       "1e-3",
@@ -23,13 +25,15 @@ namespace PolyFrac
                       "Fluid viscosity eta > 0 (Pa s).");
     prm.declare_entry("Biot coefficient",
                       "0.5",
-                      Patterns::Double(),
-                      "Biot coefficient b in [0, 1] (poromechanics).");
+                      Patterns::Anything(),
+                      "Biot coefficient b in [0, 1] (poromechanics). One "
+                      "value, or <region: value, ...> for every region.");
     prm.declare_entry("Inverse Biot modulus",
                       "1e-10",
-                      Patterns::Double(),
+                      Patterns::Anything(),
                       "1/M >= 0 (1/Pa); 0: incompressible fluid and grains. "
-                      "The matrix storage coefficient of Model = flow.");
+                      "The matrix storage coefficient of Model = flow. One "
+                      "value, or <region: value, ...> for every region.");
     prm.declare_entry("Initial porosity",
                       "0.1",
                       Patterns::Double(),
@@ -157,19 +161,25 @@ namespace PolyFrac
         prm, where, entry, lower, !strict_lower, upper, true, range);
     };
     const double infinity = std::numeric_limits<double>::max();
-    permeability          = context.checked_expression("Flow/Permeability",
-                                              prm.get("Permeability"),
-                                              1);
-    AssertThrow(!ParameterParsing::uses_time(permeability),
-                ExcMessage(where + "<Permeability> = " + permeability +
-                           " depends on t, but the permeability is evaluated "
-                           "once, at t = 0 (the flow operators are assembled "
-                           "once per level): give it in x, y (, z) only."));
+    read_permeability(prm.get("Permeability"), where, context);
     viscosity        = bounded("Viscosity", 0, infinity, true, "> 0 (Pa s)");
-    biot_coefficient = bounded("Biot coefficient", 0, 1, false, "in [0, 1]");
-    inverse_biot_modulus =
-      bounded("Inverse Biot modulus", 0, infinity, false, ">= 0 (1/Pa)");
-    initial_porosity = bounded(
+    biot_coefficient = RegionValues::parse(prm.get("Biot coefficient"),
+                                           where,
+                                           "Biot coefficient",
+                                           0,
+                                           true,
+                                           1,
+                                           true,
+                                           "in [0, 1]");
+    inverse_biot_modulus = RegionValues::parse(prm.get("Inverse Biot modulus"),
+                                               where,
+                                               "Inverse Biot modulus",
+                                               0,
+                                               true,
+                                               infinity,
+                                               false,
+                                               ">= 0 (1/Pa)");
+    initial_porosity     = bounded(
       "Initial porosity", 0, std::nextafter(1., 0.), false, "in [0, 1)");
     initial_pressure    = context.checked_expression("Flow/Initial pressure",
                                                   prm.get("Initial pressure"),
@@ -295,6 +305,36 @@ namespace PolyFrac
   FlowParameters::aperture_law_entries()
   {
     return parameter_extension_entries("Flow");
+  }
+
+
+
+  void
+  FlowParameters::read_permeability(const std::string      &text,
+                                    const std::string      &where,
+                                    const ParameterContext &context)
+  {
+    permeability_per_region.reset();
+    permeability.clear();
+    if (RegionValues::is_region_list(text))
+      {
+        permeability_per_region =
+          RegionValues::parse(text,
+                              where,
+                              "Permeability",
+                              0,
+                              true,
+                              std::numeric_limits<double>::max(),
+                              false,
+                              ">= 0 (m^2)");
+        return;
+      }
+    permeability = context.checked_expression("Flow/Permeability", text, 1);
+    AssertThrow(!ParameterParsing::uses_time(permeability),
+                ExcMessage(where + "<Permeability> = " + permeability +
+                           " depends on t, but the permeability is evaluated "
+                           "once, at t = 0 (the flow operators are assembled "
+                           "once per level): give it in x, y (, z) only."));
   }
 
 

@@ -1,5 +1,8 @@
 #include <polyfrac/physics/mechanics_parameters.h>
 
+#include <cmath>
+#include <limits>
+#include <set>
 #include <sstream>
 
 namespace PolyFrac
@@ -13,16 +16,19 @@ namespace PolyFrac
     // nu = 0.25).
     prm.declare_entry("Lame lambda",
                       "1e10",
-                      Patterns::Double(),
+                      Patterns::Anything(),
                       "First Lame coefficient in Pa (default 10 GPa: with "
                       "the default Lame mu, a sandstone of Young's modulus "
                       "25 GPa and Poisson's ratio 0.25); any lambda > "
                       "-2 mu/d is admissible (the elastic energy stays "
-                      "positive).");
+                      "positive). One value, or <region: value, ...> for "
+                      "every region of the mesh (Mesh/Region boxes, gmsh "
+                      "physical volumes).");
     prm.declare_entry("Lame mu",
                       "1e10",
-                      Patterns::Double(),
-                      "Shear modulus in Pa, > 0 (default 10 GPa).");
+                      Patterns::Anything(),
+                      "Shear modulus in Pa, > 0 (default 10 GPa). One value, "
+                      "or <region: value, ...> for every region.");
     prm.leave_subsection();
 
     prm.enter_subsection("Body force");
@@ -106,8 +112,24 @@ namespace PolyFrac
                                         const ParameterContext &context)
   {
     prm.enter_subsection("Material");
-    lame_lambda = prm.get_double("Lame lambda");
-    lame_mu     = prm.get_double("Lame mu");
+    const std::string material = context.where("Material") + ": ";
+    const double      infinity = std::numeric_limits<double>::max();
+    lame_lambda                = RegionValues::parse(prm.get("Lame lambda"),
+                                      material,
+                                      "Lame lambda",
+                                      -infinity,
+                                      false,
+                                      infinity,
+                                      false,
+                                      "a number");
+    lame_mu                    = RegionValues::parse(prm.get("Lame mu"),
+                                  material,
+                                  "Lame mu",
+                                  0,
+                                  false,
+                                  infinity,
+                                  false,
+                                  "> 0");
     prm.leave_subsection();
     check_lame_coefficients(context);
 
@@ -163,29 +185,54 @@ namespace PolyFrac
   MechanicsParameters::check_lame_coefficients(
     const ParameterContext &context) const
   {
-    const std::string where = context.where("Material") + ": ";
-    AssertThrow(lame_mu > 0,
-                ExcMessage(where + "<Lame mu> must be > 0, not " +
-                           std::to_string(lame_mu) + "."));
+    std::set<types::material_id> regions;
+    for (const RegionValues *values : {&lame_lambda, &lame_mu})
+      for (const auto &[region, value] : values->per_region())
+        regions.insert(region);
+    if (regions.empty())
+      check_lame_pair(lame_lambda(0), lame_mu(0), "", context);
+    for (const types::material_id region : regions)
+      {
+        AssertThrow(lame_lambda.has(region) && lame_mu.has(region),
+                    ExcMessage(context.where("Material") + ": region " +
+                               std::to_string(region) +
+                               " has a value in one of <Lame lambda> and "
+                               "<Lame mu> but not in the other: give both "
+                               "per region, or one of them once."));
+        check_lame_pair(lame_lambda(region),
+                        lame_mu(region),
+                        " in region " + std::to_string(region),
+                        context);
+      }
+  }
+
+
+
+  void
+  MechanicsParameters::check_lame_pair(const double            lambda,
+                                       const double            mu,
+                                       const std::string      &in_region,
+                                       const ParameterContext &context)
+  {
+    const std::string where = context.where("Material") + in_region + ": ";
     // λ > −2μ/d keeps the energy μ|ε|² + λ/2 (tr ε)² positive: its bulk
     // part is (λ + 2μ/d)/2 (tr ε)².
-    const double bound = -2 * lame_mu / context.dim;
-    AssertThrow(lame_lambda > bound,
-                ExcMessage(where +
-                           "<Lame lambda> = " + std::to_string(lame_lambda) +
-                           " is not admissible: with Lame mu = " +
-                           std::to_string(lame_mu) + " in dimension " +
-                           std::to_string(context.dim) +
-                           " the elastic energy is positive only for "
-                           "lambda > -2 mu/d = " +
-                           std::to_string(bound) + "."));
+    const double bound = -2 * mu / context.dim;
+    AssertThrow(lambda > bound,
+                ExcMessage(
+                  where + "<Lame lambda> = " + std::to_string(lambda) +
+                  " is not admissible: with Lame mu = " + std::to_string(mu) +
+                  " in dimension " + std::to_string(context.dim) +
+                  " the elastic energy is positive only for "
+                  "lambda > -2 mu/d = " +
+                  std::to_string(bound) + "."));
     // The shear stiffness μ must survive the round-off of λ + 2μ in the
     // stiffness (a relative 1e-16): beyond λ = 1e12 μ (Poisson's ratio
     // 0.5 − 5e-13) the divergence-free motions are determined by round-off.
     std::ostringstream values;
-    values << "<Lame lambda> = " << lame_lambda
-           << " is more than 1e12 times <Lame mu> = " << lame_mu;
-    AssertThrow(lame_lambda <= 1e12 * lame_mu,
+    values << "<Lame lambda> = " << lambda
+           << " is more than 1e12 times <Lame mu> = " << mu;
+    AssertThrow(lambda <= 1e12 * mu,
                 ExcMessage(where + values.str() +
                            ": the shear stiffness is lost in the round-off of "
                            "lambda + 2 mu (Poisson's ratio 0.5 to 12 digits). "

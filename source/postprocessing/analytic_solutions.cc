@@ -640,18 +640,26 @@ namespace PolyFrac
                    const ParameterContext    &context)
   {
     const std::string entry = "Flow/Permeability";
+    const std::string user  = "Exact solution/Analytic solution";
+    const std::string where = "In <" + context.file_name + ">: ";
     const double      permeability =
-      context.dim == 2 ?
+      flow.permeability_per_region ?
+             flow.permeability_per_region->uniform_value(where, entry, user) :
+           context.dim == 2 ?
              constant_value<2>(mesh, context, entry, flow.permeability) :
              constant_value<3>(mesh, context, entry, flow.permeability);
     AssertThrow(permeability > 0 && flow.viscosity > 0,
                 ExcMessage("In <" + context.file_name +
                            ">: Exact solution/Analytic solution needs "
                            "Flow/Permeability > 0 and Flow/Viscosity > 0."));
-    return {mechanics.lame_lambda,
-            mechanics.lame_mu,
-            flow.biot_coefficient,
-            flow.inverse_biot_modulus,
+    const auto uniform = [&](const RegionValues &values,
+                             const std::string  &name) {
+      return values.uniform_value(where, name, user);
+    };
+    return {uniform(mechanics.lame_lambda, "Material/Lame lambda"),
+            uniform(mechanics.lame_mu, "Material/Lame mu"),
+            uniform(flow.biot_coefficient, "Flow/Biot coefficient"),
+            uniform(flow.inverse_biot_modulus, "Flow/Inverse Biot modulus"),
             permeability / flow.viscosity};
   }
 

@@ -181,7 +181,7 @@ namespace PolyFrac
     Vector<double> R(Au1);
     R -= load;
     R -= coupling.pressure_load(flow.cell_pressures(p_after),
-                                flow.parameters().biot_coefficient,
+                                flow.biot_coefficients(),
                                 flow.fracture_pressures(p_after));
     double contact_work = 0, friction_dissipation = 0, traction_work = 0;
     for (unsigned int i = 0; i < after.multipliers.size(); ++i)
@@ -236,7 +236,6 @@ namespace PolyFrac
   {
     const auto               &mesh = geometry.mesh;
     const double              dt   = data.time_step;
-    const double              invM = flow.parameters().inverse_biot_modulus;
     const Vector<double>      zero(p_after.size());
     const std::vector<double> h_m = flow.cell_sources(data.time);
     double storage_dissipation = 0, viscous = 0, stabilisation = 0;
@@ -244,6 +243,7 @@ namespace PolyFrac
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         const double volume = geometry.cells[c].measure;
+        const double invM   = flow.inverse_biot_modulus(c);
         const double p0     = p_before(pressure_dofs.cell_dof(c));
         const double p1     = p_after(pressure_dofs.cell_dof(c));
         terms.stored_before += 0.5 * volume * invM * p0 * p0;
@@ -295,9 +295,8 @@ namespace PolyFrac
             {
               const double jump =
                 p_after(pressure_dofs.face_dof(ff.face, cell)) - p_f;
-              exchange += dt * measure *
-                          flow.normal_transmissibility(i) * jump *
-                          jump;
+              exchange +=
+                dt * measure * flow.normal_transmissibility(i) * jump * jump;
             }
         const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);
         for (unsigned int k = 0; k < fluxes.size(); ++k)

@@ -103,12 +103,11 @@ namespace PolyFrac
         const double measure = geometry.cells[c].measure;
         const auto   dof     = pressure_dofs.cell_dof(c);
         add_source(h_m[c], measure);
-        volumes.stored_in_matrix += measure *
-                                    flow.parameters().inverse_biot_modulus *
+        volumes.stored_in_matrix += measure * flow.inverse_biot_modulus(c) *
                                     (p_after(dof) - p_before(dof));
         if (!volume_after.empty())
-          volumes.stored_in_matrix += flow.parameters().biot_coefficient *
-                                      (volume_after[c] - volume_before[c]);
+          volumes.stored_in_matrix +=
+            flow.biot_coefficient(c) * (volume_after[c] - volume_before[c]);
         const auto darcy = flow.cell_fluxes(c, p_after);
         const auto increment =
           flow.increment_fluxes(c, data, p_before, p_after);

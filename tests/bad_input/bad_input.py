@@ -953,9 +953,34 @@ CASES = {
         [], files={"scene.prm": SEGMENT + section("Mesh",
                                                   Fracture_refinements="2")},
         status=0, written=["results/convergence.csv"]),
+    "region_value_missing": case(
+        "`Lame mu = 1: 3e9` with Mesh/Region boxes making regions 0 and 1 "
+        "(a region without a value)",
+        ["subsection <Material>: <Lame mu> gives regions 1, but cells of "
+         "region 0 have no value; the mesh has the regions 0, 1"],
+        files={"scene.prm": section("Mesh", Region_boxes="-1, -1 : 1, 0",
+                                    Region_box_ids="1")
+               + section("Material", Lame_mu="1: 3e9")},
+        stage="level"),
+    "region_not_in_mesh": case(
+        "`Permeability = 0: 1e-15, 1: 1e-15, 2: 1e-18` where the mesh has "
+        "regions 0 and 1 (a region that no cell has)",
+        ["subsection <Flow>: <Permeability> gives region 2, which no cell of "
+         "the mesh has; the mesh has the regions 0, 1"],
+        files={"scene.prm": section("Model", Model="flow")
+               + section("Mesh", Region_boxes="-1, -1 : 1, 0",
+                         Region_box_ids="1")
+               + section("Flow", Permeability="0: 1e-15, 1: 1e-15, 2: 1e-18")},
+        stage="level"),
+    "region_box_ids_count": case(
+        "`Region boxes` with one box and `Region box ids = 1, 2`",
+        ["<Region boxes> = -1, -1 : 1, 0 gives 1 boxes, but <Region box "
+         "ids> = 1, 2 gives 2 ids"],
+        files={"scene.prm": section("Mesh", Region_boxes="-1, -1 : 1, 0",
+                                    Region_box_ids="1, 2")}),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
-        ["<Lame mu> must be > 0, not 0.000000"],
+        ["<Lame mu> = 0: each value must be > 0, not <0>"],
         files={"scene.prm": section("Material", Lame_mu="0")}),
     # Flow.
     "flow_zero_viscosity": case(

@@ -105,12 +105,13 @@ main()
   std::cout << "Mechanics: traction <" << mechanics.fracture_traction
             << ">, pressure <" << mechanics.fracture_pressure << ">"
             << std::endl;
-  expect_error("Material/Lame mu = -1",
-               "In <scene.prm>, subsection <Material>: <Lame mu> must be > 0",
-               [] {
-                 parsed<MechanicsParameters>(
-                   "subsection Material\n set Lame mu = -1\nend\n", 2u);
-               });
+  expect_error(
+    "Material/Lame mu = -1",
+    "In <scene.prm>, subsection <Material>: <Lame mu> = -1: each value must be > 0",
+    [] {
+      parsed<MechanicsParameters>(
+        "subsection Material\n set Lame mu = -1\nend\n", 2u);
+    });
   expect_error("Body force with 3 components",
                "entry <Body force/Function expression> has 3 components",
                [] {

@@ -32,7 +32,7 @@ check(const std::string &cell_type)
   const double         p = 3, b = 0.7;
   const Vector<double> load = coupling.pressure_load(
     std::vector<double>(geometry.mesh.n_cells(), p),
-    b,
+    std::vector<double>(geometry.mesh.n_cells(), b),
     std::vector<double>(level.network->n_fracture_faces(), b * p));
 
   Vector<double> boundary(load.size());

@@ -238,6 +238,11 @@ namespace PolyFrac
       double load_displacement, load_stress;
     };
 
+    /** L = b²/(λ + 2μ/d) per cell: the fixed-stress coefficient of each
+     * cell's region. */
+    std::vector<double>
+    make_fixed_stress_coefficients() const;
+
     /** The floors of the step at the time the elasticity is set to, with
      * σ_ref the largest of Elasticity::load_scale(), |@p p| and the
      * multipliers |λ_σ| of the state. */
@@ -349,8 +354,8 @@ namespace PolyFrac
     /** The monolithic Newton step, with fractures and the monolithic
      * scheme. */
     std::unique_ptr<Newton> newton;
-    /** L = b²/(λ + 2μ/d). */
-    const double fixed_stress_coefficient;
+    /** L = b²/(λ + 2μ/d) per cell (its region's b, λ, μ). */
+    const std::vector<double> fixed_stress_coefficients;
     /** a_σ per fracture face. */
     std::vector<double> fracture_relaxation;
     /** The state: displacement, multipliers, contact states. */

@@ -86,6 +86,8 @@ namespace PolyFrac
     double diameter;
     /** x_s, per vertex of K (in the order of the local node unknowns). */
     std::vector<Point<dim>> node_points;
+    /** K: the index of the polytope. */
+    unsigned int cell;
   };
 
   /**

@@ -38,6 +38,12 @@ namespace PolyFrac
              const unsigned int    level,
              Triangulation<dim>   &tria);
 
+    /** Puts the active cells whose centre lies in a Mesh/Region box into
+     * its region (material id); a later box wins. */
+    template <int dim>
+    void
+    assign_regions(const MeshParameters &prm, Triangulation<dim> &tria);
+
     /** Refines the cells whose centre lies in the closed box. */
     template <int dim>
     void

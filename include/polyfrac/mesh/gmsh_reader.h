@@ -71,6 +71,9 @@ namespace PolyFrac
    *   tetrahedra/hexahedra in 3D, first order) become the cells of
    *   @p tria; only the nodes they use become vertices (numbered by
    *   increasing gmsh node tag); cells are oriented to positive measure;
+   *   a cell in a dim-dimensional physical group (a physical volume, a
+   *   physical surface in 2D) gets the group's tag as material id, its
+   *   region (RegionValues), the others 0;
    * - the boundary faces of @p tria covered by a (dim-1)-dimensional
    *   element of a physical group that is not a fracture get that group's
    *   tag as boundary id; the other boundary faces get 0;
@@ -82,7 +85,8 @@ namespace PolyFrac
    * dim-dimensional elements or is of another dimension; a listed fracture tag
    * has no (dim-1)-dimensional elements; a fracture element is not made of cell
    * vertices (fracture not embedded in the mesh: `Curve{..} In Surface{..}` /
-   * `Surface{..} In Volume{..}`); a non-fracture (dim-1) physical group
+   * `Surface{..} In Volume{..}`); a cell in two dim-dimensional physical
+   * groups; a non-fracture (dim-1) physical group
    * has an element inside the domain; PolyFrac built without the gmsh API.
    *
    * Each face of @p tria that is a fracture element gets the element's

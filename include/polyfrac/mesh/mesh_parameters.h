@@ -136,9 +136,30 @@ namespace PolyFrac
     unsigned int random_seed;
     /** Cells per polytope of the METIS agglomeration (1: none). */
     unsigned int cells_per_polytope;
+    /** A Mesh/Region boxes item: the cells whose centre lies in the closed
+     * box from lower to upper belong to region id. */
+    struct RegionBox
+    {
+      /** The lower corner. */
+      Point<3> lower;
+      /** The upper corner. */
+      Point<3> upper;
+      /** The region (material id) of the cells inside. */
+      types::material_id id;
+    };
+    /** Region boxes with their Region box ids, in the order given. */
+    std::vector<RegionBox> region_boxes;
     /** File name of the gmsh mesh; a relative name is resolved against
      * the directory of the parameter file when parsed. */
     std::string file_name;
+
+  private:
+    /** Reads Region boxes and Region box ids; throws naming the entries
+     * on a malformed box or lists of different lengths. */
+    void
+    read_region_boxes(ParameterHandler  &prm,
+                      const std::string &where,
+                      const unsigned int dim);
   };
 } // namespace PolyFrac
 

@@ -7,6 +7,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <array>
+#include <set>
 #include <vector>
 
 namespace PolyFrac
@@ -84,6 +85,8 @@ namespace PolyFrac
       std::vector<unsigned int> faces;
       /** The vertices of its faces, sorted and without repetition. */
       std::vector<unsigned int> vertices;
+      /** Its region: the deal.II material id of its cells (RegionValues). */
+      types::material_id region = 0;
     };
 
     /** A cell of the underlying deal.II mesh, kept for output. */
@@ -103,8 +106,9 @@ namespace PolyFrac
 
     /**
      * Merges cells with equal @p part (one entry per cell). Each connected
-     * component of a part (through faces) becomes one polytope, so a
-     * disconnected METIS part yields several polytopes. Faces flagged in
+     * component of a part (through faces between cells of one region)
+     * becomes one polytope, so a disconnected METIS part, or one that
+     * straddles two regions, yields several polytopes. Faces flagged in
      * @p keep_face (fracture faces) never end up inside a polytope: a cell
      * that would put one there is left as a polytope of its own.
      */
@@ -149,6 +153,10 @@ namespace PolyFrac
     /** For each vertex, the cells that have it as vertex. */
     std::vector<std::vector<unsigned int>>
     vertex_to_cells() const;
+
+    /** The regions of the polytopes (Cell::region), without repetition. */
+    std::set<types::material_id>
+    regions() const;
 
     /** The vertex coordinates (those of the deal.II triangulation). */
     std::vector<Point<dim>> vertices;

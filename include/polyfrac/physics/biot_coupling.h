@@ -45,13 +45,13 @@ namespace PolyFrac
 
     /**
      * b Dᵀ p_m − Jᵀ p_f: the load of the cell pressures @p cell_pressure
-     * (empty: none) with Biot coefficient @p biot_coefficient and of the
-     * fracture pressures @p fracture_pressure (empty: none) on the
-     * displacement unknowns (unconstrained).
+     * (empty: none) with the Biot coefficients @p biot_coefficients of
+     * the cells and of the fracture pressures @p fracture_pressure (empty:
+     * none) on the displacement unknowns (unconstrained).
      */
     Vector<double>
     pressure_load(const std::vector<double> &cell_pressure,
-                  const double               biot_coefficient,
+                  const std::vector<double> &biot_coefficients,
                   const std::vector<double> &fracture_pressure) const;
 
     /** |K| div_K u per cell, for the displacement @p u. */

@@ -30,11 +30,13 @@ namespace PolyFrac
   /**
    * Calls @p visit(row, p_K, value) for each entry of the volume coupling
    * of the cell pressures p_K (numbered from @p p_offset in
-   * PressureDoFMap's order): with @p with_mechanics the entries |K| div_K
-   * of D on the displacement dofs (numbered from 0, BiotCoupling), and
-   * those of D_s on the face bubbles of @p bubbles (if not null; numbered
-   * from @p s_offset). The blocks −b D, −b D_s of the poromechanical
-   * systems (BiotSystem, PoromechanicalNewton) and their patterns.
+   * PressureDoFMap's order), value the entry times the cell's
+   * @p biot_coefficients b_K: with @p with_mechanics the entries
+   * b_K |K| div_K of b D on the displacement dofs (numbered from 0,
+   * BiotCoupling), and those of b D_s on the face bubbles of @p bubbles
+   * (if not null; numbered from @p s_offset). The blocks −b D, −b D_s of
+   * the poromechanical systems (BiotSystem, PoromechanicalNewton) and
+   * their patterns.
    */
   template <int dim, typename Visitor>
   void
@@ -44,6 +46,7 @@ namespace PolyFrac
                            const types::global_dof_index s_offset,
                            const types::global_dof_index p_offset,
                            const bool                    with_mechanics,
+                           const std::vector<double>    &biot_coefficients,
                            const Visitor                &visit)
   {
     const auto &divide = coupling.divergence_matrix();
@@ -54,12 +57,14 @@ namespace PolyFrac
         for (auto entry = divide.begin(c);
              with_mechanics && entry != divide.end(c);
              ++entry)
-          visit(entry->column(), p_K, entry->value());
+          visit(entry->column(), p_K, biot_coefficients[c] * entry->value());
         if (!bubbles)
           continue;
         const auto &block = bubbles->cell_block(c);
         for (unsigned int j = 0; j < block.bubbles.size(); ++j)
-          visit(s_offset + block.bubbles[j], p_K, block.divergence[j]);
+          visit(s_offset + block.bubbles[j],
+                p_K,
+                biot_coefficients[c] * block.divergence[j]);
       }
   }
 

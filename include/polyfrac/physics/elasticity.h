@@ -107,9 +107,24 @@ namespace PolyFrac
       return dofs.n_displacement_dofs() - constraints.n_constraints();
     }
 
-    /** σ = 2μ ε + λ div I of the displacement gradient @p gradient (∇^K u). */
+    /** σ = 2μ ε + λ div I of the displacement gradient @p gradient (∇^K u)
+     * with the Lamé coefficients of polytope @p cell. */
     Tensor<2, dim>
-    stress(const Tensor<2, dim> &gradient) const;
+    stress(const unsigned int cell, const Tensor<2, dim> &gradient) const;
+
+    /** μ in polytope @p cell (its region's, Material/Lame mu). */
+    double
+    lame_mu(const unsigned int cell) const
+    {
+      return mechanics.lame_mu(geometry.mesh.cells[cell].region);
+    }
+
+    /** λ in polytope @p cell (its region's, Material/Lame lambda). */
+    double
+    lame_lambda(const unsigned int cell) const
+    {
+      return mechanics.lame_lambda(geometry.mesh.cells[cell].region);
+    }
 
     /** σ0(@p x) of Initial stress/Stress (or of @p stress, a thread's own
      * copy); throws naming the point if it is not symmetric. */
@@ -211,7 +226,8 @@ namespace PolyFrac
 
     /**
      * The local stiffness |K| σ_K(u):ε_K(v) + (2μ + λ) S_K(u, v) of the
-     * reconstruction @p local, on its dim × n_local() scalar unknowns
+     * reconstruction @p local, with the Lamé coefficients of its polytope,
+     * on its dim × n_local() scalar unknowns
      * (component d of local unknown t is row dim t + d).
      */
     FullMatrix<double>

@@ -134,15 +134,15 @@ namespace PolyFrac
 
     /**
      * The bubbles in equilibrium with the mechanics unknowns @p u and the
-     * cell pressures @p p (Biot coefficient @p b), the bubble rows of the
-     * momentum balance solved for s: A_ss s = F_s − A_su u + b D_sᵀ p, with
+     * cell pressures @p p (Biot coefficients @p b per cell), the bubble rows of
+     * the momentum balance solved for s: A_ss s = F_s − A_su u + b D_sᵀ p, with
      * @p loads = F_s (loads()). A_ss (symmetric positive definite: every
      * bubble lives on an interior face) is factorised at the first call.
      */
     Vector<double>
     bubbles_at_rest(const Vector<double>      &u,
                     const std::vector<double> &p,
-                    const double               b,
+                    const std::vector<double> &b,
                     const Vector<double>      &loads);
 
   private:

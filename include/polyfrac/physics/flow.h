@@ -282,6 +282,32 @@ namespace PolyFrac
       return cell_mobility[c];
     }
 
+    /** b of cell @p c (Flow/Biot coefficient of its region). */
+    double
+    biot_coefficient(const unsigned int c) const
+    {
+      return cell_biot_coefficient[c];
+    }
+
+    /** b per cell. */
+    const std::vector<double> &
+    biot_coefficients() const
+    {
+      return cell_biot_coefficient;
+    }
+
+    /** 1/M of cell @p c (Flow/Inverse Biot modulus of its region). */
+    double
+    inverse_biot_modulus(const unsigned int c) const
+    {
+      return cell_inverse_biot_modulus[c];
+    }
+
+    /** Throws, naming the entry, unless each property given per region
+     * lists exactly the regions of the mesh. */
+    void
+    check_regions() const;
+
     /** The constraints of one step: the pressure data, and the previous
      * pressures of the unknowns without an equation (inactive cells). */
     void
@@ -370,6 +396,10 @@ namespace PolyFrac
     const PressureDoFMap<dim>    &dofs;
     /** K_m(x̄_K)/η per cell. */
     std::vector<double> cell_mobility;
+    /** b per cell. */
+    std::vector<double> cell_biot_coefficient;
+    /** 1/M per cell. */
+    std::vector<double> cell_inverse_biot_modulus;
     /** The HFV matrices of the cells, unit mobility. */
     std::vector<FullMatrix<double>> cell_matrices;
     /** The HFV matrices of the fracture faces, unit conductivity. */

@@ -4,8 +4,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <polyfrac/base/parameter_context.h>
+#include <polyfrac/base/region_values.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,14 +50,19 @@ namespace PolyFrac
     std::vector<UnusedEntry>
     unused_entries() const;
 
-    /** Permeability K_m ≥ 0 of the matrix (isotropic), an expression. */
+    /** Permeability K_m ≥ 0 of the matrix (isotropic), an expression
+     * (empty if it is given per region). */
     std::string permeability;
+    /** Permeability K_m ≥ 0 per region, if Flow/Permeability reads
+     * <region: value, ...>. */
+    std::optional<RegionValues> permeability_per_region;
     /** Viscosity η > 0 of the fluid. */
     double viscosity;
-    /** Biot coefficient b in [0, 1] (poromechanics). */
-    double biot_coefficient;
-    /** Inverse Biot modulus 1/M ≥ 0: the storage of Model = flow. */
-    double inverse_biot_modulus;
+    /** Biot coefficient b in [0, 1] (poromechanics), per region. */
+    RegionValues biot_coefficient;
+    /** Inverse Biot modulus 1/M ≥ 0, per region: the storage of Model =
+     * flow. */
+    RegionValues inverse_biot_modulus;
     /** Initial porosity φ^0 in [0, 1) (poromechanics). */
     double initial_porosity;
     /** Initial pressure p^0 of matrix and fractures, an expression. */
@@ -102,6 +109,14 @@ namespace PolyFrac
     /** HFV stabilisation α > 0, or 0 for auto (√d in the matrix,
      * √(d−1) in the fractures). */
     double stabilisation;
+
+  private:
+    /** Reads Flow/Permeability @p text: a list <region: value, ...> into
+     * permeability_per_region, an expression in x (not t) otherwise. */
+    void
+    read_permeability(const std::string      &text,
+                      const std::string      &where,
+                      const ParameterContext &context);
   };
 } // namespace PolyFrac
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <polyfrac/base/parameter_context.h>
+#include <polyfrac/base/region_values.h>
 
 #include <map>
 #include <string>
@@ -30,10 +31,10 @@ namespace PolyFrac
     void
     parse_parameters(ParameterHandler &prm, const ParameterContext &context);
 
-    /** Material/Lame lambda: the Lamé coefficient λ. */
-    double lame_lambda;
-    /** Material/Lame mu: the shear modulus μ > 0. */
-    double lame_mu;
+    /** Material/Lame lambda: the Lamé coefficient λ, per region. */
+    RegionValues lame_lambda;
+    /** Material/Lame mu: the shear modulus μ > 0, per region. */
+    RegionValues lame_mu;
 
     /** Body force/Function expression: f, a vector expression. */
     std::string body_force;
@@ -71,9 +72,18 @@ namespace PolyFrac
     std::string initial_stress;
 
   private:
-    /** Throws unless mu > 0 and lambda > -2 mu/dim. */
+    /** Throws unless mu > 0 and lambda > -2 mu/dim in every region, and
+     * both are given in every region that one of them lists. */
     void
     check_lame_coefficients(const ParameterContext &context) const;
+
+    /** Throws, naming the file and @p in_region, unless
+     * -2 mu/dim < lambda <= 1e12 mu. */
+    static void
+    check_lame_pair(const double            lambda,
+                    const double            mu,
+                    const std::string      &in_region,
+                    const ParameterContext &context);
 
     /** Reads Boundary conditions/Dirichlet components; throws naming the
      * entry on a malformed item, an unknown component or an id that is
