@@ -5,8 +5,9 @@
 // lambda_n) of a face in contact; shear dilation: tan(psi) |[u]_tau| up to
 // its cap), its three derivatives against central differences away from
 // the kinks, the entries each choice leaves unused (for the warnings), and
-// that a wrong coefficient is refused naming the entry. The test fails
-// (exit status) on any mismatch.
+// that a wrong coefficient is refused naming the entry; one law per
+// fracture (a list) on faces of two fractures. The test fails (exit
+// status) on any mismatch.
 
 #include <deal.II/base/mpi.h>
 
@@ -118,6 +119,66 @@ namespace
   {
     Testing::expect_refused([&] { parameters(settings); }, expected);
   }
+
+  /** One law per fracture: three faces of fractures 1, 0, 1 under
+   * Aperture law = linear, Barton-Bandis: each face has its fracture's law
+   * (a face in contact, so that the laws differ), the combined law depends
+   * on the traction as Barton-Bandis does, and a list of three laws for
+   * two fractures is refused. */
+  void
+  check_per_fracture()
+  {
+    const Parameters   prm = parameters({"Fracture aperture at contact=2e-4",
+                                         "Aperture law=linear, Barton-Bandis",
+                                         "Barton-Bandis maximum closure=1e-4",
+                                         "Barton-Bandis normal stiffness=1e11"});
+    const FaceSites<2> faces{std::vector<Point<2>>(3), {1, 0, 1}, 2};
+    const auto         law =
+      ApertureLaws::Registry::create<2>(*prm.flow.aperture_law, prm, faces);
+    const auto single = [&](const std::string &name) {
+      const Parameters one =
+        parameters({"Fracture aperture at contact=2e-4",
+                    "Aperture law=" + name,
+                    "Barton-Bandis maximum closure=1e-4",
+                    "Barton-Bandis normal stiffness=1e11"});
+      return ApertureLaws::Registry::create<2>(*one.flow.aperture_law,
+                                               one,
+                                               faces);
+    };
+    const auto            linear = single("linear");
+    const auto            bb     = single("Barton-Bandis");
+    const FaceDeformation state{-1e-6, 2e-6, 5e6};
+    double                error = 0;
+    for (unsigned int face = 0; face < 3; ++face)
+      {
+        const auto &own = faces.fractures[face] == 0 ? linear : bb;
+        error =
+          std::max(error,
+                   std::abs(law->aperture(face, d_0, state) -
+                            own->aperture(face, d_0, state)) +
+                     std::abs(law->derivatives(face, state).normal_traction -
+                              own->derivatives(face, state).normal_traction));
+      }
+    std::cout << law->name() << ": every face its fracture's law ("
+              << Testing::expect_round_off("per-fracture aperture", error)
+              << "), the laws differ by "
+              << bb->aperture(0, d_0, state) - linear->aperture(0, d_0, state)
+              << " m on a face in contact" << std::endl;
+    AssertThrow(law->depends_on_traction() &&
+                  bb->aperture(0, d_0, state) < linear->aperture(0, d_0, state),
+                ExcMessage("the combined law is not Barton-Bandis' on "
+                           "fracture 1"));
+    const Parameters three =
+      parameters({"Aperture law=linear, Barton-Bandis, linear"});
+    Testing::expect_refused(
+      [&] {
+        ApertureLaws::Registry::create<2>(*three.flow.aperture_law,
+                                          three,
+                                          faces);
+      },
+      "<Aperture law> = linear, Barton-Bandis, linear lists 3 laws, but the "
+      "scene has 2 fractures");
+  }
 } // namespace
 
 int
@@ -170,4 +231,5 @@ main(int argc, char **argv)
                 "<Dilation angle>");
   check_refused({"Aperture law=shear dilation", "Maximum dilation=-1e-4"},
                 "<Maximum dilation>");
+  check_per_fracture();
 }

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
 
 #include <polyfrac/base/parameter_extensions.h>
 
@@ -44,7 +45,11 @@ namespace PolyFrac
    * Where the laws of one kind are chosen: a specialisation for each law
    * interface gives the subsection, the entry that chooses a law, the
    * default law and the first sentence of the entry's documentation (see
-   * FrictionLaw and ApertureLaw).
+   * FrictionLaw and ApertureLaw). A kind whose entry may also list one law
+   * per fracture has `per_fracture = true` and a function
+   * `combine<dim>(laws, faces)` that makes one law of them, each fracture
+   * face following the law of its fracture; otherwise `per_fracture =
+   * false`.
    */
   template <template <int> class LawInterface>
   struct LawChoice;
@@ -154,7 +159,24 @@ namespace PolyFrac
            const ParameterContext &context,
            const FaceSites<dim>   &faces)
     {
-      return factory<dim>(chosen(snapshot))(snapshot, context, faces);
+      const std::vector<const Law *> laws = chosen(snapshot);
+      if (laws.size() == 1)
+        return factory<dim>(*laws[0])(snapshot, context, faces);
+      using Choice = LawChoice<LawInterface>;
+      AssertThrow(faces.n_fractures == 0 || laws.size() == faces.n_fractures,
+                  ExcMessage(
+                    context.where(Choice::subsection) + ": <" + Choice::entry +
+                    "> = " + snapshot.get(Choice::entry) + " lists " +
+                    std::to_string(laws.size()) + " laws, but the scene has " +
+                    std::to_string(faces.n_fractures) +
+                    " fractures: give one law for every fracture, "
+                    "or one per fracture in the order of "
+                    "Fractures/Segments, Polygons or Gmsh physical "
+                    "tags."));
+      std::vector<std::unique_ptr<LawInterface<dim>>> per_fracture;
+      for (const Law *law : laws)
+        per_fracture.push_back(factory<dim>(*law)(snapshot, context, faces));
+      return Choice::template combine<dim>(std::move(per_fracture), faces);
     }
 
   private:
@@ -168,17 +190,24 @@ namespace PolyFrac
       return all;
     }
 
-    /** The law chosen in @p prm (the entry's pattern admits no other). */
-    static const Law &
+    /** The laws chosen in @p prm: one, or one per fracture (the entry's
+     * pattern admits no other names). */
+    static std::vector<const Law *>
     chosen(ParameterHandler &prm)
     {
-      const std::string name = prm.get(LawChoice<LawInterface>::entry);
-      const auto       &all  = laws();
-      const auto law = std::find_if(all.begin(), all.end(), [&](const Law &l) {
-        return l.name == name;
-      });
-      Assert(law != all.end(), ExcInternalError());
-      return *law;
+      std::vector<const Law *> result;
+      const auto              &all = laws();
+      for (const std::string &name : Utilities::split_string_list(
+             prm.get(LawChoice<LawInterface>::entry)))
+        {
+          const auto law =
+            std::find_if(all.begin(), all.end(), [&](const Law &l) {
+              return l.name == name;
+            });
+          Assert(law != all.end(), ExcInternalError());
+          result.push_back(&*law);
+        }
+      return result;
     }
 
     /** The factory of @p law in dimension dim. */
@@ -215,34 +244,49 @@ namespace PolyFrac
             names += (names.empty() ? "" : "|") + law.name;
             documentation += " " + law.name + ": " + law.description;
           }
-        prm.declare_entry(Choice::entry,
-                          Choice::default_law,
-                          Patterns::Selection(names),
-                          documentation);
+        if (Choice::per_fracture)
+          prm.declare_entry(Choice::entry,
+                            Choice::default_law,
+                            Patterns::List(Patterns::Selection(names), 1),
+                            documentation +
+                              " One law for every fracture, or one per "
+                              "fracture (in the order of Fractures/Segments, "
+                              "Polygons or Gmsh physical tags).");
+        else
+          prm.declare_entry(Choice::entry,
+                            Choice::default_law,
+                            Patterns::Selection(names),
+                            documentation);
         for (const Law &law : laws())
           law.declare(prm);
       };
       extension.check = [](ParameterHandler       &prm,
                            const ParameterContext &context) {
-        const Law &law = chosen(prm);
-        if (context.dim == 2)
-          factory<2>(law)(prm, context, {});
-        else
-          factory<3>(law)(prm, context, {});
+        for (const Law *law : chosen(prm))
+          if (context.dim == 2)
+            factory<2> (*law)(prm, context, {});
+          else
+            factory<3> (*law)(prm, context, {});
       };
       extension.unused_entries = [](ParameterHandler &prm) {
-        const Law                                       &law = chosen(prm);
+        const std::vector<const Law *> used = chosen(prm);
+        const auto                     read = [&](const std::string &entry) {
+          return std::any_of(used.begin(), used.end(), [&](const Law *law) {
+            return std::find(law->entries.begin(), law->entries.end(), entry) !=
+                   law->entries.end();
+          });
+        };
         std::vector<std::pair<std::string, std::string>> unused;
         for (const Law &other : laws())
           for (const std::string &entry : other.entries)
-            if (std::find(law.entries.begin(), law.entries.end(), entry) ==
-                  law.entries.end() &&
+            if (!read(entry) &&
                 std::find_if(unused.begin(), unused.end(), [&](const auto &e) {
                   return e.first == entry;
                 }) == unused.end())
               unused.emplace_back(entry,
                                   std::string(Choice::subsection) + "/" +
-                                    Choice::entry + " = " + law.name);
+                                    Choice::entry + " = " +
+                                    prm.get(Choice::entry));
         return unused;
       };
       return extension;

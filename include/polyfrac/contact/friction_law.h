@@ -108,6 +108,17 @@ namespace PolyFrac
     /** The first sentence of its documentation. */
     static constexpr const char *documentation =
       "Friction on the fracture faces.";
+    /** One law for all fractures (the coefficients may differ). */
+    static constexpr bool per_fracture = false;
+    /** Not called: no lists (per_fracture is false). */
+    template <int dim>
+    static std::unique_ptr<FrictionLaw<dim>>
+    combine(std::vector<std::unique_ptr<FrictionLaw<dim>>> &&,
+            const FaceSites<dim> &)
+    {
+      AssertThrow(false, ExcInternalError());
+      return nullptr;
+    }
   };
 
 

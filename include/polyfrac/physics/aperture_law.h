@@ -106,6 +106,14 @@ namespace PolyFrac
       "storage and volume) from d_0 = Fracture aperture at contact and the "
       "face's jump and normal traction lambda_n; the mechanics sees the "
       "jump alone.";
+    /** A list gives one law per fracture. */
+    static constexpr bool per_fracture = true;
+    /** The law whose faces follow the law of their fracture in @p laws
+     * (ApertureLaws::PerFracture). */
+    template <int dim>
+    static std::unique_ptr<ApertureLaw<dim>>
+    combine(std::vector<std::unique_ptr<ApertureLaw<dim>>> &&laws,
+            const FaceSites<dim>                            &faces);
   };
 
 
@@ -123,7 +131,81 @@ namespace PolyFrac
     /** An aperture law's registration line (LawRegistry::Registration). */
     template <template <int> class LawClass>
     using Registration = Registry::Registration<LawClass>;
+
+    /**
+     * One aperture law per fracture (Flow/Aperture law = linear,
+     * Barton-Bandis, ...): each fracture face follows the law of its
+     * fracture; the laws' own entries are shared.
+     */
+    template <int dim>
+    class PerFracture : public ApertureLaw<dim>
+    {
+    public:
+      /** The law laws[i] on the faces of fracture i of @p faces. */
+      PerFracture(std::vector<std::unique_ptr<ApertureLaw<dim>>> &&laws,
+                  const FaceSites<dim>                            &faces)
+        : laws(std::move(laws))
+        , fractures(faces.fractures)
+      {}
+
+      /** The laws' names, as listed. */
+      std::string
+      name() const override
+      {
+        std::string names;
+        for (const auto &law : laws)
+          names += (names.empty() ? "" : ", ") + law->name();
+        return names;
+      }
+
+      double
+      aperture(const unsigned int     face,
+               const double           d_0,
+               const FaceDeformation &state) const override
+      {
+        return law_of(face).aperture(face, d_0, state);
+      }
+
+      FaceDeformation
+      derivatives(const unsigned int     face,
+                  const FaceDeformation &state) const override
+      {
+        return law_of(face).derivatives(face, state);
+      }
+
+      /** Whether one of the laws depends on the traction. */
+      bool
+      depends_on_traction() const override
+      {
+        return std::any_of(laws.begin(), laws.end(), [](const auto &law) {
+          return law->depends_on_traction();
+        });
+      }
+
+    private:
+      /** The law of the fracture of fracture face @p face. */
+      const ApertureLaw<dim> &
+      law_of(const unsigned int face) const
+      {
+        return *laws[fractures.at(face)];
+      }
+
+      /** One law per fracture. */
+      std::vector<std::unique_ptr<ApertureLaw<dim>>> laws;
+      /** The fracture of each fracture face. */
+      std::vector<unsigned int> fractures;
+    };
   } // namespace ApertureLaws
+
+  template <int dim>
+  std::unique_ptr<ApertureLaw<dim>>
+  LawChoice<ApertureLaw>::combine(
+    std::vector<std::unique_ptr<ApertureLaw<dim>>> &&laws,
+    const FaceSites<dim>                            &faces)
+  {
+    return std::make_unique<ApertureLaws::PerFracture<dim>>(std::move(laws),
+                                                            faces);
+  }
 } // namespace PolyFrac
 
 #endif
