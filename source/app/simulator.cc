@@ -744,41 +744,15 @@ namespace PolyFrac
     std::optional<unsigned int> newton_iterations;
     if (resumption && resumption->level == level)
       {
-        read_archive(resumption->stepping,
-                     [&](boost::archive::binary_iarchive &archive) {
-                       stepping.load(archive);
-                     });
-        read_archive(resumption->output,
-                     [&](boost::archive::binary_iarchive &archive) {
-                       output.load(archive);
-                     });
-        std::istringstream model_state(resumption->model);
-        model.load_state(model_state);
-        newton_iterations = resumption->newton_iterations;
-        resumption.reset();
+        newton_iterations = resume(stepping, output, model, out);
         // The run that stopped wrote the state of its last step, if that
         // was an output time.
         if (stepping.is_output_time())
           written = stepping.current_time();
-        out << "Resumed from <" << Checkpoint::file_name(prm) << "> after step "
-            << stepping.step_number() << ", t = " << stepping.current_time()
-            << std::endl;
       }
     else
       {
-        Timer                     wall;
-        std::optional<StepReport> start;
-        {
-          TimerOutput::Scope section(timer, "solve");
-          start = model.start_in_equilibrium(out);
-        }
-        if (start)
-          {
-            TimerOutput::Scope section(timer, "postprocessing");
-            model.print_step_summary(out);
-            output.write_time_series_row(
-              0, 0, 0, 0, *start, model.errors(0), wall.wall_time());
-          }
+        start(model, output, timer, out);
         output_state(0);
       }
 
@@ -832,29 +806,96 @@ namespace PolyFrac
         }
         if (stepping.is_output_time())
           output_state(t_new);
-        const int signal = StopSignals::received(communicator);
-        if (signal != 0 ||
-            (prm.output.checkpoint_interval > 0 &&
-             stepping.step_number() % prm.output.checkpoint_interval == 0))
-          {
-            TimerOutput::Scope section(timer, "output");
-            write_checkpoint(level, stepping, output, newton_iterations, model);
-          }
-        if (signal != 0)
-          {
-            std::ostringstream message;
-            message << "Stopped by "
-                    << (signal == SIGINT ? "SIGINT" : "SIGTERM")
-                    << " after step " << stepping.step_number() << " of level "
-                    << level << ", t = " << t_new << ". Its checkpoint is <"
-                    << Checkpoint::file_name(prm) << ">: go on with polyfrac "
-                    << prm.file_name
-                    << " --resume (and the same --set options).";
-            throw StoppedBySignal(signal, message.str());
-          }
+        checkpoint_or_stop(
+          level, stepping, output, newton_iterations, model, timer);
       }
     model.print_run_summary(out);
     return newton_iterations;
+  }
+
+
+
+  template <int dim>
+  std::optional<unsigned int>
+  Simulator<dim>::resume(TimeStepping &stepping,
+                         LevelOutput  &output,
+                         Model<dim>   &model,
+                         std::ostream &out)
+  {
+    read_archive(resumption->stepping,
+                 [&](boost::archive::binary_iarchive &archive) {
+                   stepping.load(archive);
+                 });
+    read_archive(resumption->output,
+                 [&](boost::archive::binary_iarchive &archive) {
+                   output.load(archive);
+                 });
+    std::istringstream model_state(resumption->model);
+    model.load_state(model_state);
+    const std::optional<unsigned int> newton_iterations =
+      resumption->newton_iterations;
+    resumption.reset();
+    out << "Resumed from <" << Checkpoint::file_name(prm) << "> after step "
+        << stepping.step_number() << ", t = " << stepping.current_time()
+        << std::endl;
+    return newton_iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::start(Model<dim>   &model,
+                        LevelOutput  &output,
+                        TimerOutput  &timer,
+                        std::ostream &out) const
+  {
+    Timer                     wall;
+    std::optional<StepReport> start;
+    {
+      TimerOutput::Scope section(timer, "solve");
+      start = model.start_in_equilibrium(out);
+    }
+    if (start)
+      {
+        TimerOutput::Scope section(timer, "postprocessing");
+        model.print_step_summary(out);
+        output.write_time_series_row(
+          0, 0, 0, 0, *start, model.errors(0), wall.wall_time());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::checkpoint_or_stop(
+    const unsigned int                 level,
+    const TimeStepping                &stepping,
+    const LevelOutput                 &output,
+    const std::optional<unsigned int> &newton_iterations,
+    const Model<dim>                  &model,
+    TimerOutput                       &timer) const
+  {
+    const int signal = StopSignals::received(communicator);
+    if (signal != 0 ||
+        (prm.output.checkpoint_interval > 0 &&
+         stepping.step_number() % prm.output.checkpoint_interval == 0))
+      {
+        TimerOutput::Scope section(timer, "output");
+        write_checkpoint(level, stepping, output, newton_iterations, model);
+      }
+    if (signal != 0)
+      {
+        std::ostringstream message;
+        message << "Stopped by " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                << " after step " << stepping.step_number() << " of level "
+                << level << ", t = " << stepping.current_time()
+                << ". Its checkpoint is <" << Checkpoint::file_name(prm)
+                << ">: go on with polyfrac " << prm.file_name
+                << " --resume (and the same --set options).";
+        throw StoppedBySignal(signal, message.str());
+      }
   }
 
 

@@ -479,18 +479,31 @@ namespace PolyFrac
     const std::vector<LocalRows>              &rows,
     TrilinosWrappers::SparseMatrix            &matrix)
   {
-    const types::global_dof_index n_u          = dofs.n_displacement_dofs();
-    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
     // The matrix shares the index arrays of reduced_pattern (an Epetra
     // graph is reference counted): only its values are new.
     matrix.reinit(reduced_pattern);
+    copy_free_stiffness(matrix);
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      if (dofs.is_locally_owned_fracture_face(i))
+        add_bubble_elimination(i, matrix);
+    set_unit_rows(rows, matrix);
+    add_jump_rows(faces, rows, matrix);
+  }
 
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::copy_free_stiffness(
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
     // D A D on this rank's rows. A lives on the same graph, so a row of A
     // and the same row of the matrix list the same columns in the same
     // order: the values are copied entry by entry, without looking up a
     // single index (deal.II 9.4 gives only a const view of the Epetra
     // matrix; its values are written in place, its graph is untouched).
-    const Epetra_CrsMatrix &A = stiffness.trilinos_matrix();
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    const Epetra_CrsMatrix       &A            = stiffness.trilinos_matrix();
     auto &reduced = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
     const auto is_free = [&](const types::global_dof_index x) {
       return x < first_bubble && free_nodal[x];
@@ -515,73 +528,88 @@ namespace PolyFrac
             if (free_column[columns[e]])
               reduced_values[e] = A_values[e];
         }
+  }
 
-    // D A W + (D A W)^T + W^T A W, face by face: K = A W restricted to the
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::add_bubble_elimination(
+    const unsigned int              i,
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    // D A W + (D A W)^T + W^T A W of face i: K = A W restricted to the
     // columns of the face's stencil, one row per dof its bubble couples to.
-    for (unsigned int i = 0; i < faces.size(); ++i)
+    const types::global_dof_index first_bubble = dofs.bubble_dof(0, 0);
+    const auto                   &stencil      = stencils[i];
+    std::map<types::global_dof_index, Vector<double>> K;
+    Vector<double>                                    scaled(stencil.size());
+    for (unsigned int c = 0; c < dim; ++c)
       {
-        if (!dofs.is_locally_owned_fracture_face(i))
-          continue;
-        const auto                                       &stencil = stencils[i];
-        std::map<types::global_dof_index, Vector<double>> K;
-        Vector<double> scaled(stencil.size());
-        for (unsigned int c = 0; c < dim; ++c)
+        const types::global_dof_index bubble = dofs.bubble_dof(i, c);
+        Vector<double>                W(stencil.size());
+        for (auto entry = elimination.begin(bubble - first_bubble);
+             entry != elimination.end(bubble - first_bubble);
+             ++entry)
+          W(std::lower_bound(stencil.begin(), stencil.end(), entry->column()) -
+            stencil.begin()) = entry->value();
+        const auto A_row = stiffness_row(stiffness, bubble);
+        for (int e = 0; e < A_row.length; ++e)
           {
-            const types::global_dof_index bubble = dofs.bubble_dof(i, c);
-            Vector<double>                W(stencil.size());
-            for (auto entry = elimination.begin(bubble - first_bubble);
-                 entry != elimination.end(bubble - first_bubble);
-                 ++entry)
-              W(std::lower_bound(stencil.begin(),
-                                 stencil.end(),
-                                 entry->column()) -
-                stencil.begin()) = entry->value();
-            const auto A_row = stiffness_row(stiffness, bubble);
-            for (int e = 0; e < A_row.length; ++e)
+            const types::global_dof_index column = A_row.column(e);
+            if (column >= first_bubble || free_nodal[column])
               {
-                const types::global_dof_index column = A_row.column(e);
-                if (column >= first_bubble || free_nodal[column])
-                  {
-                    auto &row = K[column];
-                    if (row.size() == 0)
-                      row.reinit(stencil.size());
-                    row.add(A_row.values[e], W);
-                  }
+                auto &row = K[column];
+                if (row.size() == 0)
+                  row.reinit(stencil.size());
+                row.add(A_row.values[e], W);
               }
           }
-        for (const auto &[x, row] : K)
-          if (x < first_bubble)
-            {
-              matrix.add(
-                x, stencil.size(), stencil.data(), row.begin(), false, true);
-              for (unsigned int s = 0; s < stencil.size(); ++s)
-                matrix.add(stencil[s], x, row(s));
-            }
-          else
-            for (auto entry = elimination.begin(x - first_bubble);
-                 entry != elimination.end(x - first_bubble);
-                 ++entry)
-              {
-                scaled.equ(entry->value(), row);
-                matrix.add(entry->column(),
-                           stencil.size(),
-                           stencil.data(),
-                           scaled.begin(),
-                           false,
-                           true);
-              }
       }
+    for (const auto &[x, row] : K)
+      if (x < first_bubble)
+        {
+          matrix.add(
+            x, stencil.size(), stencil.data(), row.begin(), false, true);
+          for (unsigned int s = 0; s < stencil.size(); ++s)
+            matrix.add(stencil[s], x, row(s));
+        }
+      else
+        for (auto entry = elimination.begin(x - first_bubble);
+             entry != elimination.end(x - first_bubble);
+             ++entry)
+          {
+            scaled.equ(entry->value(), row);
+            matrix.add(entry->column(),
+                       stencil.size(),
+                       stencil.data(),
+                       scaled.begin(),
+                       false,
+                       true);
+          }
+  }
 
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::set_unit_rows(
+    const std::vector<LocalRows>   &rows,
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
     // The reduced dofs: free node sides, bubble components and jump
-    // variables; the others (fixed, prescribed jumps) get a unit row.
+    // variables; the others (fixed, prescribed jumps) get a unit row,
+    // scaled like the mean diagonal.
     std::vector<bool> reduced_dof(free_nodal);
-    for (unsigned int i = 0; i < faces.size(); ++i)
+    for (unsigned int i = 0; i < rows.size(); ++i)
       for (const unsigned int t : rows[i].traction)
         reduced_dof[dofs.bubble_dof(i, t)] = true;
     matrix.compress(VectorOperation::add);
-    double diagonal_scale = 0;
+    const Epetra_CrsMatrix &A              = stiffness.trilinos_matrix();
+    double                  diagonal_scale = 0;
     for (int local = 0; local < A.NumMyRows(); ++local)
-      diagonal_scale += std::abs(matrix.diag_element(A.GRID(local))) / n_u;
+      diagonal_scale += std::abs(matrix.diag_element(A.GRID(local))) /
+                        dofs.n_displacement_dofs();
     if (dofs.is_distributed())
       diagonal_scale =
         Utilities::MPI::sum(diagonal_scale, dofs.get_communicator());
@@ -589,7 +617,17 @@ namespace PolyFrac
       if (const types::global_dof_index row = A.GRID(local); !reduced_dof[row])
         matrix.set(row, row, diagonal_scale);
     matrix.compress(VectorOperation::insert);
+  }
 
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::add_jump_rows(
+    const std::vector<FaceLinearisation<dim>> &faces,
+    const std::vector<LocalRows>              &rows,
+    TrilinosWrappers::SparseMatrix            &matrix) const
+  {
     // Σ |σ| E on the jump variables.
     for (unsigned int i = 0; i < faces.size(); ++i)
       {

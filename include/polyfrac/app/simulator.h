@@ -117,6 +117,32 @@ namespace PolyFrac
               TimerOutput       &timer,
               std::ostream      &out);
 
+    /** Restores @p stepping, @p output and @p model from #resumption (and
+     * clears it); returns the Newton iterations of the level so far. */
+    std::optional<unsigned int>
+    resume(TimeStepping &stepping,
+           LevelOutput  &output,
+           Model<dim>   &model,
+           std::ostream &out);
+
+    /** Brings @p model to equilibrium at t = 0, if it does so, and writes
+     * that start as row 0 of the time series. */
+    void
+    start(Model<dim>   &model,
+          LevelOutput  &output,
+          TimerOutput  &timer,
+          std::ostream &out) const;
+
+    /** After a step: writes the checkpoint if one is due or a stop signal
+     * came, and then throws StoppedBySignal for the signal. */
+    void
+    checkpoint_or_stop(const unsigned int                 level,
+                       const TimeStepping                &stepping,
+                       const LevelOutput                 &output,
+                       const std::optional<unsigned int> &newton_iterations,
+                       const Model<dim>                  &model,
+                       TimerOutput                       &timer) const;
+
     /**
      * Prints how many checks of Convergence study/Maximum errors and
      * Minimum rates hold, and throws, naming each one that fails.

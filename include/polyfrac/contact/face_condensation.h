@@ -383,6 +383,32 @@ namespace PolyFrac
                           const std::vector<LocalRows>              &rows,
                           TrilinosWrappers::SparseMatrix            &matrix);
 
+    /** D A D: the stiffness on the free node-side dofs, copied into
+     * @p matrix value by value (the two share the graph). */
+    void
+    copy_free_stiffness(TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /** D A W + (D A W)^T + W^T A W of fracture face @p i: the rows of A on
+     * its bubble composed with its row W of Z. */
+    void
+    add_bubble_elimination(const unsigned int              i,
+                           TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /** Unit rows, scaled like the mean diagonal, on the dofs that are not
+     * reduced (fixed node sides, prescribed jumps) for the kinds of
+     * @p rows. */
+    void
+    set_unit_rows(const std::vector<LocalRows>   &rows,
+                  TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /** Σ |σ| E on the jump variables of @p rows, and the coupling of the
+     * traction rows of the Coulomb slip faces with their kinematic
+     * reactions. */
+    void
+    add_jump_rows(const std::vector<FaceLinearisation<dim>> &faces,
+                  const std::vector<LocalRows>              &rows,
+                  TrilinosWrappers::SparseMatrix            &matrix) const;
+
     const TrilinosWrappers::SparseMatrix            &stiffness;
     const DoFMap<dim>                               &dofs;
     const std::vector<BlockCoefficients>            &jumps;
