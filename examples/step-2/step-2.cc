@@ -375,8 +375,10 @@ namespace Step2
     , state(state)
     , friction(FrictionLaws::create(prm.contact, prm, geometry, network))
   {
-    AssertThrow(!friction->slips_by_increments() ||
-                  prm.contact.n_load_steps == 1,
+    bool slips_by_increments = false;
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      slips_by_increments |= friction->slips_by_increments(i);
+    AssertThrow(!slips_by_increments || prm.contact.n_load_steps == 1,
                 ExcMessage("step-2 checks " + friction->name() +
                            " friction with a single load step only "
                            "(Contact/Number of load steps = 1): with "
@@ -433,7 +435,7 @@ namespace Step2
     c.residual[0] = c.lambda[0] - std::max(c.b_n, 0.);
 
     // The tangential projection onto the disc B(0, g).
-    if (friction->is_free(c.normal == NormalState::contact))
+    if (friction->is_free(i, c.normal == NormalState::contact))
       c.tangential = TangentialState::free;
     else
       c.tangential =
@@ -487,12 +489,13 @@ namespace Step2
     // slip increment; a slip face then sits exactly on the border |b_τ| =
     // g, and its reported tangential state is decided by round-off. So for
     // them we compare the normal states only.
-    const bool   compare_tangential = !friction->slips_by_increments();
     unsigned int n_open = 0, n_contact = 0, n_stick = 0, n_slip = 0, n_free = 0,
-                 n_disagree = 0;
+                 n_disagree = 0, n_normal_only = 0;
     for (unsigned int i = 0; i < n_faces; ++i)
       {
-        const FaceConditions<dim> &c = faces[i];
+        const FaceConditions<dim> &c  = faces[i];
+        const bool compare_tangential = !friction->slips_by_increments(i);
+        n_normal_only += !compare_tangential;
         n_open += c.normal == NormalState::open;
         n_contact += c.normal == NormalState::contact;
         n_stick += c.tangential == TangentialState::stick;
@@ -507,7 +510,12 @@ namespace Step2
     if (n_free > 0)
       out << ", free " << n_free;
     out << std::endl;
-    const std::string compared = compare_tangential ? "" : " (normal states)";
+    const std::string compared =
+      n_normal_only == 0       ? "" :
+      n_normal_only == n_faces ? " (normal states)" :
+                                 " (normal states on the " +
+                                   std::to_string(n_normal_only) +
+                                   " faces that slip by increments)";
     AssertThrow(n_disagree == 0,
                 ExcMessage("The states from b_n, b_t differ from "
                            "ContactMechanics'" +

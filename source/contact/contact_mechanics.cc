@@ -258,7 +258,7 @@ namespace PolyFrac
                                         TangentialState &tangential_state) const
   {
     const Tensor<1, dim> j_old =
-      friction->slips_by_increments() ? j_prev : Tensor<1, dim>();
+      friction->slips_by_increments(i) ? j_prev : Tensor<1, dim>();
     const double b = beta[i];
     // The slip of the step and the slip path at x.
     const Tensor<1, dim> step_slip = tangential_part(j - j_prev);
@@ -291,7 +291,7 @@ namespace PolyFrac
         M_lambda[0][0] = 1;
       }
 
-    if (friction->is_free(in_contact))
+    if (friction->is_free(i, in_contact))
       {
         tangential_state = TangentialState::free;
         for (unsigned int d = 1; d < dim; ++d)
@@ -1076,9 +1076,9 @@ namespace PolyFrac
   void
   ContactMechanics<dim>::check_start(const MechanicalState<dim> &state) const
   {
-    const double allowed = friction->maximum_slip_increment(0.);
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
+        const double allowed = friction->maximum_slip_increment(i, 0.);
         if (state.face_slip(i) > allowed)
           {
             std::ostringstream what;
@@ -1110,7 +1110,7 @@ namespace PolyFrac
     for (unsigned int i = 0; i < slip.size(); ++i)
       {
         const double before  = state.face_slip(i);
-        const double allowed = friction->maximum_slip_increment(before);
+        const double allowed = friction->maximum_slip_increment(i, before);
         if (slip[i] - before > allowed)
           {
             const unsigned int n_weakening = n_weakening_faces(state);

@@ -5,8 +5,8 @@
 // the kink of slip weakening), whether a face out of contact is free and
 // whether slip counts in increments, coefficients given per fracture (one
 // face on each of two fractures), and that a wrong coefficient, or a list
-// of the wrong length, is refused naming the entry. The test fails (exit
-// status) on any mismatch.
+// of the wrong length, is refused naming the entry; one law per fracture
+// (a list of laws). The test fails (exit status) on any mismatch.
 
 #include <deal.II/base/mpi.h>
 
@@ -62,12 +62,11 @@ namespace
     const auto law = FrictionLaws::create(prm.contact, prm, faces);
     std::cout << law->name() << ":";
     AssertThrow(law->name() == expected.name, ExcInternalError());
-    AssertThrow(law->is_free(true) == expected.free_in_contact,
-                ExcInternalError());
-    AssertThrow(law->is_free(false) == expected.free_when_open,
-                ExcInternalError());
-    AssertThrow(law->slips_by_increments() == expected.increments,
-                ExcInternalError());
+    for (unsigned int face = 0; face < centroids.size(); ++face)
+      AssertThrow(law->is_free(face, true) == expected.free_in_contact &&
+                    law->is_free(face, false) == expected.free_when_open &&
+                    law->slips_by_increments(face) == expected.increments,
+                  ExcInternalError());
     for (unsigned int face = 0; face < centroids.size(); ++face)
       for (const double slip : {0., 4e-4, 3e-3})
         for (const double normal : {-1., 0.5, 2., 10.})
@@ -105,6 +104,44 @@ namespace
                 const std::string              &expected)
   {
     Testing::expect_refused([&] { parameters(settings); }, expected);
+  }
+
+  /** One law per fracture (Friction law = frictionless, Coulomb) on the
+   * faces of fractures 1, 0, 1: each face has its fracture's law (free or
+   * not, slip by increments or not, the bound), and a list of three laws
+   * for two fractures is refused. */
+  void
+  check_per_fracture()
+  {
+    const FaceSites<2> faces{std::vector<Point<2>>(3), {1, 0, 1}, 2};
+    const Parameters   prm = parameters(
+      {"Friction law=frictionless, Coulomb", "Friction coefficient=0.6"});
+    const auto law = FrictionLaws::create(prm.contact, prm, faces);
+    std::cout << law->name() << ":";
+    for (unsigned int face = 0; face < 3; ++face)
+      {
+        const bool   coulomb = faces.fractures[face] == 1;
+        const double g       = law->slip_bound(face, 2., 0.);
+        std::cout << " face " << face << " (fracture " << faces.fractures[face]
+                  << ") g(2, 0) = " << g;
+        AssertThrow(law->is_free(face, true) == !coulomb &&
+                      law->slips_by_increments(face) == coulomb &&
+                      g == (coulomb ? 1.2 : 0.) &&
+                      law->slip_bound_derivative(face, 2., 0.) ==
+                        (coulomb ? 0.6 : 0.),
+                    ExcMessage("face " + std::to_string(face) +
+                               " does not follow its fracture's law"));
+      }
+    std::cout << std::endl;
+    Testing::expect_refused(
+      [&] {
+        FrictionLaws::create(
+          parameters({"Friction law=frictionless, Coulomb, Tresca"}).contact,
+          prm,
+          faces);
+      },
+      "<Friction law> = frictionless, Coulomb, Tresca lists 3 laws, but the "
+      "scene has 2 fractures");
   }
 } // namespace
 
@@ -203,4 +240,5 @@ main(int argc, char **argv)
                 "<-0.1>");
   check_refused({"Friction law=Tresca", "Tresca threshold=foo"},
                 "Entry <Contact/Tresca threshold>: cannot parse <foo>");
+  check_per_fracture();
 }

@@ -14,6 +14,12 @@ its faces slip, and on each slipping face |lambda_tau| = 0.2 lambda_n (its
 own coefficient, not fracture 0's) to 1e-6. With one coefficient for both,
 fracture 1 would stick and the test fails.
 
+A second run gives each fracture its own law (Contact/Friction law =
+Coulomb, frictionless; Friction coefficient = 1): fracture 0 sticks as
+before, and every face of fracture 1 is free (no friction acts) with
+|lambda_tau| <= 1e-9 lambda_n. With one law for both, fracture 1 would
+stick.
+
 usage: per_fracture_friction.py POLYFRAC SOURCE_DIR WORK_DIR
 Exits non-zero on the first failed check.
 """
@@ -61,40 +67,53 @@ def fail(message):
 
 
 program, source, work = sys.argv[1:4]
-directory = os.path.join(work, "per_fracture_friction")
-shutil.rmtree(directory, ignore_errors=True)
-os.makedirs(directory)
-with open(os.path.join(directory, "scene.prm"), "w") as scene:
-    scene.write(SCENE)
-result = subprocess.run([program, os.path.join(directory, "scene.prm")],
-                        capture_output=True, text=True)
-if result.returncode != 0:
-    fail(f"exit {result.returncode}\n{result.stderr}")
-results = os.path.join(directory, "results")
-name = sorted(f for f in os.listdir(results)
-              if f.startswith("fractures-level-0") and f.endswith(".vtu"))[-1]
-vtu = meshio.read(os.path.join(results, name))
-# The fracture index is point data (the same at both ends of a face).
-fracture = np.rint(vtu.point_data["fracture"][vtu.cells_dict["line"][:, 0]]
-                   ).astype(int)
-state = cell_data(vtu, "tangential_state").astype(int)
-normal = cell_data(vtu, "normal_traction")
-shear = np.linalg.norm(cell_data(vtu, "tangential_traction"), axis=1)
 
-stick = fracture == 0
-print(f"fracture 0 (F = 1): {np.count_nonzero(stick)} faces, "
-      f"{np.count_nonzero(state[stick] == 0)} stick; lambda_n "
-      f"{normal[stick].min():.6g}..{normal[stick].max():.6g}, |lambda_tau| "
-      f"{shear[stick].min():.6g}..{shear[stick].max():.6g}")
-if not np.all(state[stick] == 0):
-    fail("a face of fracture 0 (F = 1) does not stick")
-# Sticking under F = 1, while its shear ratio (near the 0.4 of the affine
-# stress; the slip of fracture 1 perturbs it) exceeds fracture 1's 0.2.
-stick_ratio = shear[stick] / normal[stick]
-if not (np.max(stick_ratio) < 1 and np.min(stick_ratio) > 0.2):
-    fail("fracture 0's shear ratio is not between 0.2 and 1: the scene "
-         "does not tell the two coefficients apart")
 
+def run(name, *settings):
+    """The fracture of each face, its tangential state, lambda_n and
+    |lambda_tau| in the scene with the --set SETTINGS."""
+    directory = os.path.join(work, name)
+    shutil.rmtree(directory, ignore_errors=True)
+    os.makedirs(directory)
+    with open(os.path.join(directory, "scene.prm"), "w") as scene:
+        scene.write(SCENE)
+    arguments = [program, os.path.join(directory, "scene.prm")]
+    for setting in settings:
+        arguments += ["--set", setting]
+    result = subprocess.run(arguments, capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"{name}: exit {result.returncode}\n{result.stderr}")
+    results = os.path.join(directory, "results")
+    last = sorted(f for f in os.listdir(results)
+                  if f.startswith("fractures-level-0") and f.endswith(".vtu"))
+    vtu = meshio.read(os.path.join(results, last[-1]))
+    # The fracture index is point data (the same at both ends of a face).
+    fracture = np.rint(vtu.point_data["fracture"][vtu.cells_dict["line"][:, 0]]
+                       ).astype(int)
+    return (fracture, cell_data(vtu, "tangential_state").astype(int),
+            cell_data(vtu, "normal_traction"),
+            np.linalg.norm(cell_data(vtu, "tangential_traction"), axis=1))
+
+
+def check_sticks(fracture, state, normal, shear):
+    """Fracture 0 (F = 1) sticks, at a shear ratio between 0.2 and 1."""
+    stick = fracture == 0
+    print(f"fracture 0 (F = 1): {np.count_nonzero(stick)} faces, "
+          f"{np.count_nonzero(state[stick] == 0)} stick; lambda_n "
+          f"{normal[stick].min():.6g}..{normal[stick].max():.6g}, "
+          f"|lambda_tau| {shear[stick].min():.6g}..{shear[stick].max():.6g}")
+    if not np.all(state[stick] == 0):
+        fail("a face of fracture 0 (F = 1) does not stick")
+    # Sticking under F = 1, while its shear ratio (near the 0.4 of the
+    # affine stress; the slip of fracture 1 perturbs it) exceeds 0.2.
+    stick_ratio = shear[stick] / normal[stick]
+    if not (np.max(stick_ratio) < 1 and np.min(stick_ratio) > 0.2):
+        fail("fracture 0's shear ratio is not between 0.2 and 1: the scene "
+             "does not tell the two fractures apart")
+
+
+fracture, state, normal, shear = run("coefficients")
+check_sticks(fracture, state, normal, shear)
 slipping = (fracture == 1) & (state == 1)
 ratio = shear[slipping] / normal[slipping]
 print(f"fracture 1 (F = 0.2): {np.count_nonzero(fracture == 1)} faces, "
@@ -105,3 +124,15 @@ if not np.any(slipping):
     fail("no face of fracture 1 (F = 0.2) slips")
 if not np.max(np.abs(ratio - 0.2)) <= 1e-6:
     fail("the slipping faces of fracture 1 are not at its own Coulomb bound")
+
+fracture, state, normal, shear = run(
+    "laws", "Contact/Friction law=Coulomb, frictionless",
+    "Contact/Friction coefficient=1")
+check_sticks(fracture, state, normal, shear)
+free = fracture == 1
+print(f"fracture 1 (frictionless): {np.count_nonzero(free)} faces, "
+      f"{np.count_nonzero(state[free] == 2)} free; |lambda_tau|/lambda_n "
+      f"at most {np.max(shear[free] / normal[free]):.3g}")
+if not (np.all(state[free] == 2) and
+        np.max(shear[free] / normal[free]) <= 1e-9):
+    fail("fracture 1 (frictionless) carries friction")

@@ -9,6 +9,7 @@
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -47,16 +48,16 @@ namespace PolyFrac
     virtual std::string
     name() const = 0;
 
-    /** Whether the tangential traction of a face vanishes, the face in
-     * contact or not (@p in_contact). */
+    /** Whether the tangential traction of fracture face @p face vanishes,
+     * the face in contact or not (@p in_contact). */
     virtual bool
-    is_free(const bool in_contact) const = 0;
+    is_free(const unsigned int face, const bool in_contact) const = 0;
 
-    /** Whether b_τ = λ_τ + β [[u − u^{n−1}]]_τ, the slip increment since the
-     * last load or time step (quasi-static laws of Coulomb's kind), rather
-     * than λ_τ + β [[u]]_τ. */
+    /** Whether on fracture face @p face b_τ = λ_τ + β [[u − u^{n−1}]]_τ,
+     * the slip increment since the last load or time step (quasi-static
+     * laws of Coulomb's kind), rather than λ_τ + β [[u]]_τ. */
     virtual bool
-    slips_by_increments() const = 0;
+    slips_by_increments(const unsigned int face) const = 0;
 
     /** The slip bound g_σ ≥ 0 of fracture face @p face at b_n = @p
      * normal and the slip path s_σ = @p slip. */
@@ -81,13 +82,15 @@ namespace PolyFrac
       return 0;
     }
 
-    /** The largest slip that a quasi-static time step may add to a face
-     * whose slip path is @p slip (ContactMechanics::quasi_static_step()):
+    /** The largest slip that a quasi-static time step may add to fracture
+     * face @p face, whose slip path is @p slip
+     * (ContactMechanics::quasi_static_step()):
      * infinite unless the bound weakens with slip, where a longer step may
      * have jumped past the peak load of a slipping patch onto another
      * equilibrium instead of following the quasi-static path. */
     virtual double
-    maximum_slip_increment(const double /*slip*/) const
+    maximum_slip_increment(const unsigned int /*face*/,
+                           const double /*slip*/) const
     {
       return std::numeric_limits<double>::infinity();
     }
@@ -108,17 +111,14 @@ namespace PolyFrac
     /** The first sentence of its documentation. */
     static constexpr const char *documentation =
       "Friction on the fracture faces.";
-    /** One law for all fractures (the coefficients may differ). */
-    static constexpr bool per_fracture = false;
-    /** Not called: no lists (per_fracture is false). */
+    /** A list gives one law per fracture. */
+    static constexpr bool per_fracture = true;
+    /** The law whose faces follow the law of their fracture in @p laws
+     * (FrictionLaws::PerFracture). */
     template <int dim>
     static std::unique_ptr<FrictionLaw<dim>>
-    combine(std::vector<std::unique_ptr<FrictionLaw<dim>>> &&,
-            const FaceSites<dim> &)
-    {
-      AssertThrow(false, ExcInternalError());
-      return nullptr;
-    }
+    combine(std::vector<std::unique_ptr<FrictionLaw<dim>>> &&laws,
+            const FaceSites<dim>                            &faces);
   };
 
 
@@ -135,6 +135,90 @@ namespace PolyFrac
     /** A friction law's registration line (LawRegistry::Registration). */
     template <template <int> class LawClass>
     using Registration = Registry::Registration<LawClass>;
+
+    /**
+     * One friction law per fracture (Contact/Friction law = Coulomb,
+     * frictionless, ...): each fracture face follows the law of its
+     * fracture; the laws' own entries are shared (Friction coefficient may
+     * still differ per fracture).
+     */
+    template <int dim>
+    class PerFracture : public FrictionLaw<dim>
+    {
+    public:
+      /** The law laws[i] on the faces of fracture i of @p faces. */
+      PerFracture(std::vector<std::unique_ptr<FrictionLaw<dim>>> &&laws,
+                  const FaceSites<dim>                            &faces)
+        : laws(std::move(laws))
+        , fractures(faces.fractures)
+      {}
+
+      /** The laws' names, as listed. */
+      std::string
+      name() const override
+      {
+        std::string names;
+        for (const auto &law : laws)
+          names += (names.empty() ? "" : ", ") + law->name();
+        return names;
+      }
+
+      bool
+      is_free(const unsigned int face, const bool in_contact) const override
+      {
+        return law_of(face).is_free(face, in_contact);
+      }
+
+      bool
+      slips_by_increments(const unsigned int face) const override
+      {
+        return law_of(face).slips_by_increments(face);
+      }
+
+      double
+      slip_bound(const unsigned int face,
+                 const double       normal,
+                 const double       slip) const override
+      {
+        return law_of(face).slip_bound(face, normal, slip);
+      }
+
+      double
+      slip_bound_derivative(const unsigned int face,
+                            const double       normal,
+                            const double       slip) const override
+      {
+        return law_of(face).slip_bound_derivative(face, normal, slip);
+      }
+
+      double
+      slip_bound_slip_derivative(const unsigned int face,
+                                 const double       normal,
+                                 const double       slip) const override
+      {
+        return law_of(face).slip_bound_slip_derivative(face, normal, slip);
+      }
+
+      double
+      maximum_slip_increment(const unsigned int face,
+                             const double       slip) const override
+      {
+        return law_of(face).maximum_slip_increment(face, slip);
+      }
+
+    private:
+      /** The law of the fracture of fracture face @p face. */
+      const FrictionLaw<dim> &
+      law_of(const unsigned int face) const
+      {
+        return *laws[fractures.at(face)];
+      }
+
+      /** One law per fracture. */
+      std::vector<std::unique_ptr<FrictionLaw<dim>>> laws;
+      /** The fracture of each fracture face. */
+      std::vector<unsigned int> fractures;
+    };
 
     /** The law that Contact/Friction law of @p prm chooses, for the
      * fracture faces @p faces; @p context gives the
@@ -160,6 +244,16 @@ namespace PolyFrac
       return create(prm, context, network.face_sites(geometry));
     }
   } // namespace FrictionLaws
+
+  template <int dim>
+  std::unique_ptr<FrictionLaw<dim>>
+  LawChoice<FrictionLaw>::combine(
+    std::vector<std::unique_ptr<FrictionLaw<dim>>> &&laws,
+    const FaceSites<dim>                            &faces)
+  {
+    return std::make_unique<FrictionLaws::PerFracture<dim>>(std::move(laws),
+                                                            faces);
+  }
 } // namespace PolyFrac
 
 #endif

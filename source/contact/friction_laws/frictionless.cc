@@ -21,13 +21,13 @@ namespace PolyFrac
       }
 
       bool
-      is_free(const bool) const override
+      is_free(const unsigned int, const bool) const override
       {
         return true;
       }
 
       bool
-      slips_by_increments() const override
+      slips_by_increments(const unsigned int) const override
       {
         return false;
       }

@@ -88,7 +88,8 @@ namespace PolyFrac
        * quasi-static path the slip of a step falls with the step, while a
        * jump past the peak load slips by D_c or more. */
       double
-      maximum_slip_increment(const double slip) const override
+      maximum_slip_increment(const unsigned int,
+                             const double slip) const override
       {
         return slip < weakening_distance ?
                  weakening_distance / 4 :

@@ -32,13 +32,13 @@ namespace PolyFrac
     }
 
     bool
-    is_free(const bool in_contact) const override
+    is_free(const unsigned int, const bool in_contact) const override
     {
       return !in_contact;
     }
 
     bool
-    slips_by_increments() const override
+    slips_by_increments(const unsigned int) const override
     {
       return true;
     }
