@@ -202,6 +202,8 @@ namespace PolyFrac
             "Flow/Viscosity",
             "Flow/Inverse Biot modulus",
             "Flow/Initial pressure",
+            "Flow/Fluid density",
+            "Flow/Top pressure",
             "Flow/Fracture aperture at contact",
             "Flow/Minimum fracture aperture",
             "Flow/Fracture normal transmissibility",

@@ -17,32 +17,18 @@ namespace PolyFrac
   {
     /**
      * Bytes per deal.II cell of the finest level, [dim − 2][direct]: the
-     * smallest (maximum resident memory − 158 MB of start-up) / cells of
-     * `/usr/bin/time -v build/polyfrac` on one level of the B2 scenes
-     * (2026-11-22, Release):
-     *
-     * | scene, method           | cells | max RSS | bytes/cell |
-     * |-------------------------|-------|---------|------------|
-     * | b2-2d, direct           |  4096 |  189 MB |       7626 |
-     * | b2-2d, direct           | 65536 |  581 MB |       6616 |
-     * | b2-2d, AMG              | 65536 |  434 MB |       4314 |
-     * | b2-2d-tresca, direct    | 16384 |  291 MB |       8318 |
-     * | b2-3d, direct           |  4096 |  316 MB |      39616 |
-     * | b2-3d, direct           | 13824 | 1033 MB |      64850 |
-     * | b2-3d, AMG              | 13824 |  358 MB |      14781 |
-     * | b2-3d-tresca, AMG       |  4096 |  247 MB |      22179 |
-     *
-     * UMFPACK's factors grow faster than the cells in 3D, so the figures
-     * are lower bounds on larger meshes.
+     * smallest (maximum resident memory − start-up) / cells measured on one
+     * level of the B2 scenes (benchmarks/README.md, "Calibration of the
+     * memory estimate"); lower bounds on larger meshes in 3D, where
+     * UMFPACK's factors grow faster than the cells.
      */
     constexpr double bytes_per_cell[2][2] = {{4300., 6600.}, {14700., 39600.}};
 
     /**
      * The part of one rank's memory that every rank holds whole (the mesh,
-     * the polytopal view, the DoF maps, the whole vectors): the peak
-     * resident memory per rank of elasticity on a 40³ level was 1,060 MiB
-     * on one rank and 536 MiB on four (issue 31), so R + D = 1060 and
-     * R + D/4 = 536 give R = 0.34 (R + D).
+     * the polytopal view, the DoF maps, the whole vectors), from the peak
+     * memory per rank on one and on four ranks (benchmarks/README.md,
+     * "Calibration of the memory estimate").
      */
     constexpr double replicated_fraction = 0.34;
   } // namespace

@@ -213,7 +213,7 @@ namespace PolyFrac
 
 
   Parameters::Parameters(const unsigned int dim)
-    : ParameterContext{"", dim, {}}
+    : ParameterContext{"", dim, {}, {}}
     , prm(std::make_shared<ParameterHandler>())
   {
     declare(*prm, dim);
@@ -242,6 +242,19 @@ namespace PolyFrac
                                     "="),
                       "Constants usable in every expression entry, e.g. "
                       "<c=1, g=1>.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Gravity");
+    prm.declare_entry("Vector",
+                      ParameterParsing::repeated("0", dim),
+                      Patterns::Anything(),
+                      "The acceleration of gravity g in m/s^2, comma "
+                      "separated components (e.g. <0, -9.81> in 2D, <0, 0, "
+                      "-9.81> in 3D); the elevation is measured along -g. "
+                      "Zero: no gravity. With gravity, the rock weighs "
+                      "Material/Density times g and the Darcy and cubic-law "
+                      "fluxes are driven by grad p - rho_f g (Flow/Fluid "
+                      "density).");
     prm.leave_subsection();
 
     prm.enter_subsection("Model");
@@ -386,6 +399,20 @@ namespace PolyFrac
 
 
   void
+  Parameters::read_gravity()
+  {
+    prm->enter_subsection("Gravity");
+    const Point<3> g =
+      ParameterParsing::parse_point(prm->get("Vector"),
+                                    dim,
+                                    where("Gravity") + ", <Vector>");
+    prm->leave_subsection();
+    gravity = g;
+  }
+
+
+
+  void
   Parameters::read_values()
   {
     warnings.clear();
@@ -395,6 +422,7 @@ namespace PolyFrac
                            "before everything else)."));
 
     read_constants();
+    read_gravity();
 
     prm->enter_subsection("Model");
     model = prm->get("Model");
@@ -408,6 +436,7 @@ namespace PolyFrac
     contact.parse_parameters(*prm, *this);
     flow.parse_parameters(*prm, *this);
     flow.check_fracture_count(fractures.n_fractures(), *this);
+    set_pore_fluid_at_rest();
     nonlinear.parse_parameters(*prm, *this);
     solver.parse_parameters(*prm, *this);
     output.parse_parameters(*prm, *this);
@@ -502,6 +531,31 @@ namespace PolyFrac
 
 
   void
+  Parameters::set_pore_fluid_at_rest()
+  {
+    using InitialStress = MechanicsParameters::InitialStress;
+    mechanics.pore_fluid_at_rest.reset();
+    if (mechanics.initial_stress_kind != InitialStress::lithostatic ||
+        !uses("Flow/Biot coefficient"))
+      return;
+    AssertThrow(flow.initial_pressure_kind ==
+                  FlowParameters::InitialPressure::hydrostatic,
+                ExcMessage(
+                  where("Initial stress") +
+                  ": Kind = lithostatic with Model = " + model +
+                  " takes the effective stress of the rock over a fluid at "
+                  "rest, but Flow/Initial pressure is an expression: set it "
+                  "to hydrostatic (with Flow/Top pressure), or give the "
+                  "stress as an expression (Kind = expression)."));
+    mechanics.pore_fluid_at_rest =
+      MechanicsParameters::PoreFluidAtRest{flow.fluid_density,
+                                           flow.top_pressure,
+                                           flow.biot_coefficient};
+  }
+
+
+
+  void
   Parameters::check_analytic_solution() const
   {
     if (exact.analytic_solution == AnalyticSolution::none)
@@ -534,6 +588,14 @@ namespace PolyFrac
                  (dim == 2 ? "Segments" : "Polygons") +
                  ", Gmsh physical tags), or the analytic "
                  "solution."));
+    AssertThrow(!has_gravity(),
+                ExcMessage(
+                  where + "it is the solution of a weightless " +
+                  (exact.analytic_solution == AnalyticSolution::terzaghi ?
+                     std::string("column") :
+                     std::string("plate")) +
+                  ": set Gravity/Vector to 0, or remove the "
+                  "analytic solution."));
     AssertThrow(exact.analytic_load != 0,
                 ExcMessage(
                   where +
@@ -733,6 +795,7 @@ namespace PolyFrac
     };
 
     warn_unused(FractureParameters::unused_entries(dim));
+    warn_unused(mechanics.unused_entries());
     if (!is_time_dependent())
       {
         for (const std::string entry : {"End time",

@@ -577,10 +577,46 @@ namespace PolyFrac
         coupling.face_deformations(before.displacement, before.multipliers)),
       volume_changes(before.displacement, before.face_bubbles)};
     Vector<double> x = first_iterate(data.time, guess, p_guess);
+    ContactStates  states;
+    try
+      {
+        states = iterate(
+          x, start, guess.contact, displacement_floor, pressure_floor, result);
+      }
+    catch (const std::exception &e)
+      {
+        result.failure = "the Newton step of the coupled system failed at "
+                         "iteration " +
+                         std::to_string(result.iterations + 1) + ": " +
+                         exception_message(e);
+        return result;
+      }
+    if (!result.converged)
+      {
+        result.failure = not_converged_message(result);
+        return result;
+      }
+    // The state at the solution, with its contact states and step data
+    // (linearised there by the line search).
+    split(x, before, states, after, p_after);
+    return result;
+  }
 
+
+
+  template <int dim>
+  ContactStates
+  PoromechanicalNewton<dim>::iterate(Vector<double>      &x,
+                                     const StepStart     &start,
+                                     const ContactStates &guess_states,
+                                     const double         displacement_floor,
+                                     const double         pressure_floor,
+                                     Result              &result)
+  {
+    FlowStepData &data = result.data;
     // The states of the guess: a state at rest keeps them and converges in
     // one iteration.
-    ContactStates previous_states = guess.contact, factorised_states;
+    ContactStates previous_states = guess_states, factorised_states;
     const auto    same = [](const ContactStates &a, const ContactStates &b) {
       return a.normal == b.normal && a.tangential == b.tangential;
     };
@@ -595,101 +631,87 @@ namespace PolyFrac
     constexpr double           contraction = 0.5;
     Vector<double>             residual;
     const std::vector<double> &increments = result.increments;
-    ContactStates              states;
     StepProgress               progress;
-    try
+    ContactStates              states = linearise(x, start, data, residual);
+    for (unsigned int k = 1; k <= prm.nonlinear.max_iterations; ++k)
       {
-        states = linearise(x, start, data, residual);
-        for (unsigned int k = 1; k <= prm.nonlinear.max_iterations; ++k)
+        // The active set cycles (states met before, not those of the last
+        // iteration) or the iteration stagnates (no smaller increment in 4
+        // iterations): as ContactMechanics::newton(), make β smaller (the
+        // solution does not depend on it) and linearise again.
+        const bool settled = same(states, previous_states);
+        const bool cycling =
+          !seen_states.emplace(states.normal, states.tangential).second &&
+          !settled;
+        previous_states = states;
+        if ((cycling || k >= best_iteration + 4) &&
+            contact.reduce_complementarity_parameter())
           {
-            // The active set cycles (states met before, not those of the
-            // last iteration) or the iteration stagnates (no smaller
-            // increment in 4 iterations): as ContactMechanics::newton(),
-            // make β smaller (the solution does not depend on it) and
-            // linearise again.
-            const bool settled = same(states, previous_states);
-            const bool cycling =
-              !seen_states.emplace(states.normal, states.tangential).second &&
-              !settled;
-            previous_states       = states;
-            const bool stagnating = k >= best_iteration + 4;
-            if ((cycling || stagnating) &&
-                contact.reduce_complementarity_parameter())
-              {
-                ++result.beta_reductions;
-                seen_states.clear();
-                best_increment    = std::numeric_limits<double>::max();
-                best_iteration    = k;
-                factorised_states = ContactStates();
-                states            = linearise(x, start, data, residual);
-                continue;
-              }
-            // A step with the states of the last factorisation reuses it
-            // (a chord step) while the iteration contracts: the Jacobian
-            // then changes only through the apertures and slip directions.
-            const std::size_t n = increments.size();
-            const bool        reuse =
-              n >= 2 && same(states, factorised_states) &&
-              increments[n - 1] <= contraction * increments[n - 2];
-            if (!reuse)
-              {
-                factorise();
-                factorised_states = states;
-                ++result.factorisations;
-              }
-            Vector<double> dx = solve(residual);
-            states            = line_search(x, dx, start, data, residual);
-            const double increment =
-              relative_increment(dx, x, displacement_floor, pressure_floor);
-            // Converged when the step was taken with settled states, or
-            // when a second step in a row moved nothing: faces at the
-            // Coulomb bound (|b_τ| = g to round-off) may flip between
-            // stick and slip, both of which the solution satisfies.
-            const double tolerance = prm.nonlinear.coupling_tolerance;
-            const bool   again     = n > 0 && increments[n - 1] <= tolerance;
-            result.increments.push_back(increment);
-            result.iterations = k;
-            progress.show(iteration_status(k, increment, states));
-            if (increment < best_increment)
-              {
-                best_increment = increment;
-                best_iteration = k;
-              }
-            if (increment <= tolerance && (settled || again))
-              {
-                result.converged = true;
-                break;
-              }
+            ++result.beta_reductions;
+            seen_states.clear();
+            best_increment    = std::numeric_limits<double>::max();
+            best_iteration    = k;
+            factorised_states = ContactStates();
+            states            = linearise(x, start, data, residual);
+            continue;
+          }
+        // A step with the states of the last factorisation reuses it (a
+        // chord step) while the iteration contracts: the Jacobian then
+        // changes only through the apertures and slip directions.
+        const std::size_t n     = increments.size();
+        const bool        reuse = n >= 2 && same(states, factorised_states) &&
+                           increments[n - 1] <= contraction * increments[n - 2];
+        if (!reuse)
+          {
+            factorise();
+            factorised_states = states;
+            ++result.factorisations;
+          }
+        Vector<double> dx = solve(residual);
+        states            = line_search(x, dx, start, data, residual);
+        const double increment =
+          relative_increment(dx, x, displacement_floor, pressure_floor);
+        // Converged when the step was taken with settled states, or when a
+        // second step in a row moved nothing: faces at the Coulomb bound
+        // (|b_τ| = g to round-off) may flip between stick and slip, both of
+        // which the solution satisfies.
+        const double tolerance = prm.nonlinear.coupling_tolerance;
+        const bool   again     = n > 0 && increments[n - 1] <= tolerance;
+        result.increments.push_back(increment);
+        result.iterations = k;
+        progress.show(iteration_status(k, increment, states));
+        if (increment < best_increment)
+          {
+            best_increment = increment;
+            best_iteration = k;
+          }
+        if (increment <= tolerance && (settled || again))
+          {
+            result.converged = true;
+            break;
           }
       }
-    catch (const std::exception &e)
-      {
-        result.failure = "the Newton step of the coupled system failed at "
-                         "iteration " +
-                         std::to_string(result.iterations + 1) + ": " +
-                         exception_message(e);
-        return result;
-      }
-    if (!result.converged)
-      {
-        std::ostringstream what;
-        what << "the monolithic Newton iteration did not converge in "
-             << prm.nonlinear.max_iterations
-             << " iterations (Nonlinear solver/Maximum iterations; last "
-                "relative increment "
-             << result.increments.back() << ", tolerance "
-             << prm.nonlinear.coupling_tolerance
-             << "), after dividing the complementarity parameter by 10 "
-             << result.beta_reductions
-             << " times where the contact states cycled or the "
-                "increments stagnated.";
-        result.failure = what.str();
-        return result;
-      }
-    // The state at the solution, with its contact states and step data
-    // (linearised there by the line search).
-    split(x, before, states, after, p_after);
-    return result;
+    return states;
+  }
+
+
+
+  template <int dim>
+  std::string
+  PoromechanicalNewton<dim>::not_converged_message(const Result &result) const
+  {
+    std::ostringstream what;
+    what << "the monolithic Newton iteration did not converge in "
+         << prm.nonlinear.max_iterations
+         << " iterations (Nonlinear solver/Maximum iterations; last "
+            "relative increment "
+         << result.increments.back() << ", tolerance "
+         << prm.nonlinear.coupling_tolerance
+         << "), after dividing the complementarity parameter by 10 "
+         << result.beta_reductions
+         << " times where the contact states cycled or the increments "
+            "stagnated.";
+    return what.str();
   }
 
 

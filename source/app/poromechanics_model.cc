@@ -105,6 +105,8 @@ namespace PolyFrac
                     pressure_dofs,
                     flow)
     , fixed_stress_coefficients(make_fixed_stress_coefficients())
+    , increment_mobility_weights(make_increment_mobility_weights())
+    , largest_modulus(stiffest_modulus())
     , pressure(flow.initial_pressure())
   {
     if (discretization.dofs->is_distributed())
@@ -311,6 +313,34 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::vector<double>
+  PoromechanicsModel<dim>::make_increment_mobility_weights() const
+  {
+    std::vector<double> weights(discretization.geometry->cells.size());
+    for (unsigned int c = 0; c < weights.size(); ++c)
+      weights[c] = prm.flow.pressure_stabilisation *
+                   std::pow(flow.biot_coefficient(c), 2) /
+                   (elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c)) *
+                   std::pow(discretization.geometry->cells[c].diameter, 2);
+    return weights;
+  }
+
+
+
+  template <int dim>
+  double
+  PoromechanicsModel<dim>::stiffest_modulus() const
+  {
+    double modulus = 0;
+    for (unsigned int c = 0; c < discretization.mesh->n_cells(); ++c)
+      modulus = std::max(modulus,
+                         elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c));
+    return modulus;
+  }
+
+
+
+  template <int dim>
   typename PoromechanicsModel<dim>::Scales
   PoromechanicsModel<dim>::scales(const Vector<double> &p) const
   {
@@ -318,10 +348,7 @@ namespace PolyFrac
     for (const Tensor<1, dim> &lambda : state.multipliers)
       stress = std::max(stress, lambda.norm());
     // The stiffest region's λ + 2μ: the smaller displacement scale.
-    double modulus = 0;
-    for (unsigned int c = 0; c < discretization.mesh->n_cells(); ++c)
-      modulus = std::max(modulus,
-                         elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c));
+    const double modulus      = largest_modulus;
     const auto  &geometry     = *discretization.geometry;
     const double floor        = 1e-6;
     const double displacement = stress * geometry.domain_diameter() / modulus;
@@ -373,15 +400,9 @@ namespace PolyFrac
   std::vector<double>
   PoromechanicsModel<dim>::increment_mobility(const double time_step) const
   {
-    std::vector<double> s(discretization.geometry->cells.size());
-    for (unsigned int c = 0; c < s.size(); ++c)
-      {
-        const double b = flow.biot_coefficient(c);
-        const double delta =
-          prm.flow.pressure_stabilisation * b * b /
-          ((elasticity.lame_lambda(c) + 2 * elasticity.lame_mu(c)) * time_step);
-        s[c] = delta * std::pow(discretization.geometry->cells[c].diameter, 2);
-      }
+    std::vector<double> s = increment_mobility_weights;
+    for (double &weight : s)
+      weight /= time_step;
     return s;
   }
 

@@ -185,6 +185,29 @@ namespace PolyFrac
 
 
 
+    std::optional<double>
+    checked_number(const std::string &text,
+                   const double       lower,
+                   const bool         lower_included,
+                   const double       upper,
+                   const bool         upper_included)
+    {
+      double value = std::numeric_limits<double>::quiet_NaN();
+      try
+        {
+          value = Utilities::string_to_double(text);
+        }
+      catch (...)
+        {}
+      if (std::isfinite(value) &&
+          (lower_included ? value >= lower : value > lower) &&
+          (upper_included ? value <= upper : value < upper))
+        return value;
+      return std::nullopt;
+    }
+
+
+
     std::vector<double>
     per_fracture_doubles(ParameterHandler  &prm,
                          const std::string &where,
@@ -204,15 +227,13 @@ namespace PolyFrac
               values.push_back(0);
               continue;
             }
-          double value = std::numeric_limits<double>::quiet_NaN();
-          try
-            {
-              value = Utilities::string_to_double(item);
-            }
-          catch (...)
-            {}
-          AssertThrow(std::isfinite(value) &&
-                        (lower_included ? value >= lower : value > lower),
+          const std::optional<double> value =
+            checked_number(item,
+                           lower,
+                           lower_included,
+                           std::numeric_limits<double>::infinity(),
+                           false);
+          AssertThrow(value.has_value(),
                       ExcMessage(where + "<" + entry + "> = " + prm.get(entry) +
                                  ": each value must be " + range +
                                  (keyword.empty() ? "" : " or " + keyword) +
@@ -220,7 +241,7 @@ namespace PolyFrac
                                  "> (one value for every fracture, or one "
                                  "per fracture in the order of Fractures/"
                                  "Segments, Polygons or Gmsh physical tags)."));
-          values.push_back(value);
+          values.push_back(*value);
         }
       AssertThrow(!values.empty(),
                   ExcMessage(where + "<" + entry +

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <polyfrac/base/parameter_context.h>
 #include <polyfrac/base/region_values.h>
 
 #include <cmath>
@@ -60,20 +61,13 @@ namespace PolyFrac
                       const std::string &range)
   {
     const auto number = [&](const std::string &item) {
-      double value = std::numeric_limits<double>::quiet_NaN();
-      try
-        {
-          value = Utilities::string_to_double(item);
-        }
-      catch (...)
-        {}
-      AssertThrow(std::isfinite(value) &&
-                    (lower_included ? value >= lower : value > lower) &&
-                    (upper_included ? value <= upper : value < upper),
+      const std::optional<double> value = ParameterParsing::checked_number(
+        item, lower, lower_included, upper, upper_included);
+      AssertThrow(value.has_value(),
                   ExcMessage(where + "<" + entry + "> = " + text +
                              ": each value must be " + range + ", not <" +
                              item + ">" + form + "."));
-      return value;
+      return *value;
     };
     if (!is_region_list(text))
       return RegionValues(number(Utilities::trim(text)));

@@ -722,6 +722,101 @@ namespace PolyFrac
 
 
 
+  namespace
+  {
+    /** ‖momentum‖² + ‖complementarity‖²: what a damped step must lower. */
+    template <typename ResidualType>
+    double
+    merit(const ResidualType &R)
+    {
+      return R.momentum * R.momentum + R.complementarity * R.complementarity;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<int>
+  ContactMechanics<dim>::report_iteration(const Residual    &R,
+                                          const unsigned int iteration,
+                                          std::ostream      &out) const
+  {
+    std::vector<int> states;
+    unsigned int     n_open = 0, n_stick = 0, n_slip = 0;
+    for (unsigned int i = 0; i < R.normal.size(); ++i)
+      {
+        states.push_back(2 * static_cast<int>(R.normal[i]) +
+                         8 * static_cast<int>(R.tangential[i]));
+        n_open += R.normal[i] == NormalState::open;
+        n_stick += R.tangential[i] == TangentialState::stick;
+        n_slip += R.tangential[i] == TangentialState::slip;
+      }
+    out << "  Newton " << std::setw(2) << iteration << ": momentum "
+        << std::scientific << std::setprecision(2) << R.momentum
+        << ", complementarity " << R.complementarity << std::defaultfloat
+        << "; open " << n_open << ", stick " << n_stick << ", slip " << n_slip
+        << std::endl;
+    return states;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactMechanics<dim>::ActiveSetHistory::record(
+    const std::vector<int> &states,
+    const double            merit_value,
+    const unsigned int      iteration)
+  {
+    const bool cycling = !seen.insert(states).second && states != last;
+    last               = states;
+    if (merit_value < best_merit)
+      {
+        best_merit     = merit_value;
+        best_iteration = iteration;
+      }
+    return cycling;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactMechanics<dim>::ActiveSetHistory::restart(const unsigned int iteration,
+                                                   const bool forget_last)
+  {
+    seen.clear();
+    if (forget_last)
+      last.clear();
+    best_merit     = std::numeric_limits<double>::max();
+    best_iteration = iteration;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactMechanics<dim>::damped_step(const Vector<double> &x,
+                                     const Vector<double> &step,
+                                     const Residual       &R,
+                                     const double          load,
+                                     std::ostream         &out)
+  {
+    double         alpha = 1;
+    Vector<double> trial(x.size());
+    for (; alpha > 1. / 64; alpha /= 2)
+      {
+        trial = x;
+        trial.add(alpha, step);
+        if (merit(residual(trial, load)) < merit(R))
+          break;
+      }
+    out << "  (active set cycles: damped step " << alpha << ")" << std::endl;
+    return alpha;
+  }
+
+
+
   template <int dim>
   bool
   ContactMechanics<dim>::newton(const double    load,
@@ -732,36 +827,14 @@ namespace PolyFrac
     for (const auto &[dof, value] : dirichlet)
       x(dof) = load * value;
 
-    std::set<std::vector<int>> seen_states;
-    std::vector<int>           last_states;
+    ActiveSetHistory history;
     // The iterate before the last step.
-    Vector<double> last_iterate   = x;
-    double         best_merit     = std::numeric_limits<double>::max();
-    unsigned int   best_iteration = 0;
-    const auto     merit          = [](const Residual &R) {
-      return R.momentum * R.momentum + R.complementarity * R.complementarity;
-    };
-
+    Vector<double> last_iterate = x;
     for (unsigned int it = 1; it <= nonlinear.max_iterations; ++it)
       {
         const Residual R = residual(x, load);
         ++total_iterations;
-
-        std::vector<int> states;
-        unsigned int     n_open = 0, n_stick = 0, n_slip = 0;
-        for (unsigned int i = 0; i < R.normal.size(); ++i)
-          {
-            states.push_back(2 * static_cast<int>(R.normal[i]) +
-                             8 * static_cast<int>(R.tangential[i]));
-            n_open += R.normal[i] == NormalState::open;
-            n_stick += R.tangential[i] == TangentialState::stick;
-            n_slip += R.tangential[i] == TangentialState::slip;
-          }
-        out << "  Newton " << std::setw(2) << it << ": momentum "
-            << std::scientific << std::setprecision(2) << R.momentum
-            << ", complementarity " << R.complementarity << std::defaultfloat
-            << "; open " << n_open << ", stick " << n_stick << ", slip "
-            << n_slip << std::endl;
+        const std::vector<int> states = report_iteration(R, it, out);
 
         // After the first step the momentum equation is linear in the
         // unknowns and holds to round-off: a relative residual of 1e10 (or
@@ -784,10 +857,7 @@ namespace PolyFrac
                 return false;
               }
             x = last_iterate;
-            seen_states.clear();
-            last_states.clear();
-            best_merit     = std::numeric_limits<double>::max();
-            best_iteration = it;
+            history.restart(it, true);
             out << "  (the step of iteration " << it - 1
                 << " blew up on a singular Jacobian: back to its iterate, "
                    "complementarity parameter divided by 10)"
@@ -795,7 +865,7 @@ namespace PolyFrac
             continue;
           }
 
-        if (states == last_states && R.momentum < nonlinear.tolerance &&
+        if (states == history.last && R.momentum < nonlinear.tolerance &&
             R.complementarity < nonlinear.tolerance)
           return true;
 
@@ -803,20 +873,11 @@ namespace PolyFrac
         // best residual for 4 iterations). The contact conditions hold for
         // every β > 0, so first make β smaller, which weakens the coupling
         // of the states to the jump (up to three times); then damp.
-        const bool cycling =
-          !seen_states.insert(states).second && states != last_states;
-        last_states = states;
-        if (merit(R) < best_merit)
-          {
-            best_merit     = merit(R);
-            best_iteration = it;
-          }
-        if ((cycling || it >= best_iteration + 4) &&
+        const bool cycling = history.record(states, merit(R), it);
+        if ((cycling || it >= history.best_iteration + 4) &&
             reduce_complementarity_parameter())
           {
-            seen_states.clear();
-            best_merit     = std::numeric_limits<double>::max();
-            best_iteration = it;
+            history.restart(it, false);
             out << "  (active set " << (cycling ? "cycles" : "stagnates")
                 << ": complementarity parameter divided by 10)" << std::endl;
             continue;
@@ -838,22 +899,8 @@ namespace PolyFrac
         if (!solve_report.empty())
           out << "    " << solve_report << std::endl;
 
-        double alpha = 1;
-        if (cycling)
-          {
-            Vector<double> trial(x.size());
-            for (; alpha > 1. / 64; alpha /= 2)
-              {
-                trial = x;
-                trial.add(alpha, step);
-                if (merit(residual(trial, load)) < merit(R))
-                  break;
-              }
-            out << "  (active set cycles: damped step " << alpha << ")"
-                << std::endl;
-          }
         last_iterate = x;
-        x.add(alpha, step);
+        x.add(cycling ? damped_step(x, step, R, load, out) : 1., step);
       }
     return false;
   }

@@ -37,6 +37,12 @@ namespace PolyFrac
     , geometry(geometry)
     , network(network)
     , dofs(dofs)
+    , lithostatic(mechanics.initial_stress_kind ==
+                      MechanicsParameters::InitialStress::lithostatic ?
+                    std::make_unique<const LithostaticStress<dim>>(mechanics,
+                                                                   context,
+                                                                   geometry) :
+                    nullptr)
     , body_force(make_body_force(0.))
     , dirichlet(make_expression<dim>("Boundary conditions/Dirichlet expression",
                                      mechanics.boundary.dirichlet_expression,
@@ -60,6 +66,7 @@ namespace PolyFrac
     const std::string                  where = context.where("Material") + ": ";
     mechanics.lame_lambda.check_regions(regions, where, "Lame lambda");
     mechanics.lame_mu.check_regions(regions, where, "Lame mu");
+    mechanics.density.check_regions(regions, where, "Density");
   }
 
 
@@ -79,9 +86,11 @@ namespace PolyFrac
 
 
   template <int dim>
-  std::unique_ptr<FunctionParser<dim>>
+  std::unique_ptr<Function<dim>>
   Elasticity<dim>::make_initial_stress(const double time) const
   {
+    if (lithostatic)
+      return std::make_unique<LithostaticStress<dim>>(*lithostatic);
     auto stress = make_expression<dim>("Initial stress/Stress",
                                        mechanics.initial_stress,
                                        dim * dim,
@@ -447,7 +456,8 @@ namespace PolyFrac
                              const Function<dim>            &force,
                              const Function<dim>            &stress) const
   {
-    Vector<double> f(dim), b(dim * local.n_local());
+    Vector<double>       f(dim), b(dim * local.n_local());
+    const Tensor<1, dim> rho_g = weight(cell);
     for (const auto &q : geometry.quadrature(cell))
       {
         force.vector_value(q.point, f);
@@ -456,10 +466,23 @@ namespace PolyFrac
             const double phi =
               q.weight * local.potential_coefficient(t, q.point);
             for (unsigned int d = 0; d < dim; ++d)
-              b(dim * t + d) += f(d) * phi;
+              b(dim * t + d) += (f(d) + rho_g[d]) * phi;
           }
       }
-    // In-situ stress: −|K| σ0(x̄_K):ε_K(v) = −|K| Σ_ij σ0_ij ∂_j v_i.
+    b += initial_stress_load(local, cell, stress);
+    return b;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Elasticity<dim>::initial_stress_load(const LocalReconstruction<dim> &local,
+                                       const unsigned int              cell,
+                                       const Function<dim> &stress) const
+  {
+    // −|K| σ0(x̄_K):ε_K(v) = −|K| Σ_ij σ0_ij ∂_j v_i.
+    Vector<double>       b(dim * local.n_local());
     const Tensor<2, dim> sigma0 =
       initial_stress_value(geometry.cells[cell].centroid, &stress);
     for (unsigned int t = 0; t < local.n_local(); ++t)
@@ -467,6 +490,48 @@ namespace PolyFrac
         b(dim * t + d) -=
           local.measure * (sigma0[d] * local.gradient_coefficients[t]);
     return b;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Elasticity<dim>::local_initial_stress_load(
+    const LocalReconstruction<dim> &local,
+    const unsigned int              cell) const
+  {
+    return initial_stress_load(local, cell, *initial_stress);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Elasticity<dim>::body_force_value(const unsigned int cell,
+                                    const Point<dim>  &x) const
+  {
+    Vector<double> f(dim);
+    body_force->vector_value(x, f);
+    Tensor<1, dim> value = weight(cell);
+    for (unsigned int d = 0; d < dim; ++d)
+      value[d] += f(d);
+    return value;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Elasticity<dim>::weight(const unsigned int cell) const
+  {
+    Tensor<1, dim> rho_g;
+    if (context.has_gravity())
+      {
+        const double rho = mechanics.density(geometry.mesh.cells[cell].region);
+        for (unsigned int d = 0; d < dim; ++d)
+          rho_g[d] = rho * context.gravity[d];
+      }
+    return rho_g;
   }
 
 
@@ -529,6 +594,7 @@ namespace PolyFrac
         scale               = std::max(scale, initial_stress_value(x).norm());
         body_force->vector_value(x, value);
         scale = std::max(scale, value.l2_norm() * diameter);
+        scale = std::max(scale, weight(c).norm() * diameter);
       }
     for (unsigned int f = 0; f < mesh.n_faces(); ++f)
       if (on_neumann_boundary(f))
@@ -675,13 +741,10 @@ namespace PolyFrac
   void
   Elasticity<dim>::set_time(const double t)
   {
-    for (auto *function : {&body_force,
-                           &dirichlet,
-                           &neumann,
-                           &fracture_pressure,
-                           &traction,
-                           &initial_stress})
+    for (auto *function :
+         {&body_force, &dirichlet, &neumann, &fracture_pressure, &traction})
       (*function)->set_time(t);
+    initial_stress->set_time(t);
     if (dirichlet_data)
       dirichlet_data->set_time(t);
   }
@@ -737,11 +800,14 @@ namespace PolyFrac
     for (unsigned int K = 0; K < n; ++K)
       {
         const LocalReconstruction<dim> local(geometry, dofs, network, K);
-        sigma[K]      = stress(K, local.gradient(state.local_values(dofs, K)));
-        double volume = 0;
+        sigma[K] = stress(K, local.gradient(state.local_values(dofs, K)));
+        double               volume = 0;
+        const Tensor<1, dim> rho_g  = weight(K);
         for (const QuadraturePoint<dim> &q : geometry.quadrature(K))
           {
             body_force->vector_value(q.point, f);
+            for (unsigned int d = 0; d < dim; ++d)
+              f(d) += rho_g[d];
             volume += q.weight * f.norm_sqr();
           }
         double rho = std::numeric_limits<double>::max();

@@ -149,12 +149,23 @@ namespace PolyFrac
         if (block.bubbles.empty())
           continue;
         const LocalReconstruction<dim> local = extended_reconstruction(c);
-        const Vector<double>           load  = elasticity.local_load(local, c);
+        const Vector<double>           load =
+          elasticity.local_initial_stress_load(local, c);
         const unsigned int n = local.n_local() - block.bubbles.size();
         for (unsigned int j = 0; j < block.bubbles.size(); ++j)
-          for (unsigned int d = 0; d < dim; ++d)
-            result(block.bubbles[j]) +=
-              normals[block.bubbles[j]][d] * load(dim * (n + j) + d);
+          {
+            const unsigned int    bubble = block.bubbles[j];
+            const Tensor<1, dim> &normal = normals[bubble];
+            for (unsigned int d = 0; d < dim; ++d)
+              result(bubble) += normal[d] * load(dim * (n + j) + d);
+            // The body force on K's half of the diamond of σ: |σ| times
+            // the distance of x̄_K from σ along n_σ.
+            const auto &face = geometry.faces[bubble_faces[bubble]];
+            result(bubble) +=
+              (elasticity.body_force_value(c, face.centroid) * normal) *
+              face.measure *
+              std::abs((face.centroid - geometry.cells[c].centroid) * normal);
+          }
       }
     return result;
   }

@@ -14,6 +14,7 @@
 #include <polyfrac/discretization/hybrid_finite_volume.h>
 #include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/gravity.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,21 @@ namespace PolyFrac
       "pressures are determined by nothing, e.g. a fracture whose faces are "
       "all in contact (no storage) in an impermeable matrix (no exchange) "
       "without a pressure boundary.";
+
+    /** The outward fluxes −c (M v)_i, i ≥ 1, of the values @p v of the
+     * unknowns of one HFV matrix @p M (a cell's or a fracture face's, its
+     * own unknown first) with the coefficient @p c. */
+    std::vector<double>
+    outward_fluxes(const FullMatrix<double> &M,
+                   const double              c,
+                   const Vector<double>     &v)
+    {
+      std::vector<double> fluxes(v.size() - 1, 0.);
+      for (unsigned int i = 1; i < v.size(); ++i)
+        for (unsigned int j = 0; j < v.size(); ++j)
+          fluxes[i - 1] -= c * M(i, j) * v(j);
+      return fluxes;
+    }
   } // namespace
 
 
@@ -140,6 +156,14 @@ namespace PolyFrac
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       fracture_matrices.push_back(
         fracture_hfv_matrix(geometry, network, edges, i, fracture_alpha));
+    if (context.has_gravity() && prm.fluid_density > 0)
+      gravity_potential = interpolate(
+        ScalarFunctionFromFunctionObject<dim>([this](const Point<dim> &x) {
+          double g_x = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            g_x += this->context.gravity[d] * x[d];
+          return this->prm.fluid_density * g_x;
+        }));
   }
 
 
@@ -200,8 +224,47 @@ namespace PolyFrac
   Vector<double>
   Flow<dim>::initial_pressure() const
   {
+    if (prm.initial_pressure_kind ==
+        FlowParameters::InitialPressure::hydrostatic)
+      return interpolate(
+        HydrostaticPressure<dim>(prm.fluid_density,
+                                 prm.top_pressure,
+                                 top_elevation(geometry, context),
+                                 context));
     return interpolate(*make_expression<dim>(
       "Flow/Initial pressure", prm.initial_pressure, 1, context.constants));
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Flow<dim>::potential(const std::vector<types::global_dof_index> &local_dofs,
+                       const Vector<double> &pressure) const
+  {
+    Vector<double> q(local_dofs.size());
+    for (unsigned int j = 0; j < local_dofs.size(); ++j)
+      q(j) = pressure(local_dofs[j]) - gravity_potential_at(local_dofs[j]);
+    return q;
+  }
+
+
+
+  template <int dim>
+  void
+  Flow<dim>::add_gravity_flux(
+    const FullMatrix<double>                   &matrix,
+    const double                                coefficient,
+    const std::vector<types::global_dof_index> &local_dofs,
+    Vector<double>                             &local_rhs) const
+  {
+    if (gravity_potential.size() == 0)
+      return;
+    Vector<double> gamma(local_dofs.size()), flux(local_dofs.size());
+    for (unsigned int j = 0; j < local_dofs.size(); ++j)
+      gamma(j) = gravity_potential(local_dofs[j]);
+    matrix.vmult(flux, gamma);
+    local_rhs.add(coefficient, flux);
   }
 
 
@@ -421,6 +484,10 @@ namespace PolyFrac
             cell_matrices[c].vmult(local_rhs, p_previous);
             local_rhs *= increment;
           }
+        add_gravity_flux(cell_matrices[c],
+                         cell_mobility[c],
+                         cell_dofs(c),
+                         local_rhs);
         local(0, 0) += volume * data.storage[c] / dt;
         local_rhs(0) +=
           volume * (matrix_source->value(geometry.cells[c].centroid) +
@@ -447,11 +514,15 @@ namespace PolyFrac
         FullMatrix<double> local = fracture_matrices[i];
         local *= fracture_conductivity(i, data.apertures[i]);
         Vector<double> local_rhs(local.m());
+        add_gravity_flux(fracture_matrices[i],
+                         fracture_conductivity(i, data.apertures[i]),
+                         fracture_dofs(i),
+                         local_rhs);
         local(0, 0) += face.measure * data.fracture_storage[i] / dt;
-        local_rhs(0) = face.measure * (fracture_source->value(face.centroid) +
-                                       data.fracture_rhs[i]) +
-                       face.measure * data.fracture_storage[i] / dt *
-                         previous(dofs.fracture_face_dof(i));
+        local_rhs(0) += face.measure * (fracture_source->value(face.centroid) +
+                                        data.fracture_rhs[i]) +
+                        face.measure * data.fracture_storage[i] / dt *
+                          previous(dofs.fracture_face_dof(i));
         constraints.distribute_local_to_global(
           local, local_rhs, fracture_dofs(i), matrix, rhs);
 
@@ -711,13 +782,9 @@ namespace PolyFrac
   Flow<dim>::cell_fluxes(const unsigned int    c,
                          const Vector<double> &pressure) const
   {
-    const auto                local_dofs = cell_dofs(c);
-    const FullMatrix<double> &A          = cell_matrices[c];
-    std::vector<double>       fluxes(local_dofs.size() - 1, 0.);
-    for (unsigned int i = 1; i < local_dofs.size(); ++i)
-      for (unsigned int j = 0; j < local_dofs.size(); ++j)
-        fluxes[i - 1] -= cell_mobility[c] * A(i, j) * pressure(local_dofs[j]);
-    return fluxes;
+    return outward_fluxes(cell_matrices[c],
+                          cell_mobility[c],
+                          potential(cell_dofs(c), pressure));
   }
 
 
@@ -729,16 +796,15 @@ namespace PolyFrac
                               const Vector<double> &previous,
                               const Vector<double> &pressure) const
   {
-    const auto                local_dofs = cell_dofs(c);
-    const FullMatrix<double> &A          = cell_matrices[c];
-    std::vector<double>       fluxes(local_dofs.size() - 1, 0.);
-    if (data.increment_mobility.empty())
-      return fluxes;
-    for (unsigned int i = 1; i < local_dofs.size(); ++i)
-      for (unsigned int j = 0; j < local_dofs.size(); ++j)
-        fluxes[i - 1] -= data.increment_mobility[c] * A(i, j) *
-                         (pressure(local_dofs[j]) - previous(local_dofs[j]));
-    return fluxes;
+    const auto     local_dofs = cell_dofs(c);
+    Vector<double> increment(local_dofs.size());
+    for (unsigned int j = 0; j < local_dofs.size(); ++j)
+      increment(j) = pressure(local_dofs[j]) - previous(local_dofs[j]);
+    return outward_fluxes(cell_matrices[c],
+                          data.increment_mobility.empty() ?
+                            0. :
+                            data.increment_mobility[c],
+                          increment);
   }
 
 
@@ -749,14 +815,9 @@ namespace PolyFrac
                              const std::vector<double> &apertures,
                              const Vector<double>      &pressure) const
   {
-    const auto                local_dofs = fracture_dofs(i);
-    const FullMatrix<double> &B          = fracture_matrices[i];
-    const double        conductivity = fracture_conductivity(i, apertures[i]);
-    std::vector<double> fluxes(local_dofs.size() - 1, 0.);
-    for (unsigned int a = 1; a < local_dofs.size(); ++a)
-      for (unsigned int b = 0; b < local_dofs.size(); ++b)
-        fluxes[a - 1] -= conductivity * B(a, b) * pressure(local_dofs[b]);
-    return fluxes;
+    return outward_fluxes(fracture_matrices[i],
+                          fracture_conductivity(i, apertures[i]),
+                          potential(fracture_dofs(i), pressure));
   }
 
 
@@ -781,9 +842,10 @@ namespace PolyFrac
     const double slope =
       k_f > 0 ? k_f / prm.viscosity : 3 * d * d / (12 * prm.viscosity);
     const FullMatrix<double> &B = fracture_matrices[i];
+    const Vector<double>      q = potential(local_dofs, pressure);
     for (unsigned int a = 0; a < local_dofs.size(); ++a)
       for (unsigned int b = 0; b < local_dofs.size(); ++b)
-        derivative[a] += slope * B(a, b) * pressure(local_dofs[b]);
+        derivative[a] += slope * B(a, b) * q(b);
     const double measure =
       geometry.faces[network.fracture_faces[i].face].measure;
     derivative[0] += measure * prm.fracture_compressibility *
@@ -803,16 +865,31 @@ namespace PolyFrac
     const auto &mesh = geometry.mesh;
     matrix_source->set_time(data.time);
     fracture_source->set_time(data.time);
-    // The residual of one balance relative to its largest term.
-    const auto relative = [](const std::vector<double> &terms) {
+    // The residual of one balance relative to its largest term, among
+    // which the fluxes that gravity drives, @p gravity: the fluxes of p − γ
+    // are differences of those of p and γ, and carry their round-off.
+    const auto relative = [](const std::vector<double> &terms,
+                             const std::vector<double> &gravity) {
       double sum = 0, largest = 0;
       for (const double t : terms)
         {
           sum += t;
           largest = std::max(largest, std::abs(t));
         }
+      for (const double t : gravity)
+        largest = std::max(largest, std::abs(t));
       return largest > 0 ? std::abs(sum) / largest : 0.;
     };
+    // The fluxes −c (M γ)_i of an HFV matrix @p M on @p local_dofs.
+    const auto gravity_fluxes =
+      [this](const FullMatrix<double>                   &M,
+             const double                                c,
+             const std::vector<types::global_dof_index> &local_dofs) {
+        Vector<double> gamma(local_dofs.size());
+        for (unsigned int j = 0; j < local_dofs.size(); ++j)
+          gamma(j) = gravity_potential_at(local_dofs[j]);
+        return outward_fluxes(M, c, gamma);
+      };
     double residual = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       if (active(c, data))
@@ -827,7 +904,11 @@ namespace PolyFrac
           terms.push_back(-volume *
                           (matrix_source->value(geometry.cells[c].centroid) +
                            data.cell_rhs[c]));
-          residual = std::max(residual, relative(terms));
+          residual = std::max(residual,
+                              relative(terms,
+                                       gravity_fluxes(cell_matrices[c],
+                                                      cell_mobility[c],
+                                                      cell_dofs(c))));
         }
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
@@ -845,7 +926,12 @@ namespace PolyFrac
                             (p_f - pressure(dofs.face_dof(ff.face, cell))));
         terms.push_back(-face.measure * (fracture_source->value(face.centroid) +
                                          data.fracture_rhs[i]));
-        residual = std::max(residual, relative(terms));
+        residual = std::max(
+          residual,
+          relative(terms,
+                   gravity_fluxes(fracture_matrices[i],
+                                  fracture_conductivity(i, data.apertures[i]),
+                                  fracture_dofs(i))));
       }
     return residual;
   }

@@ -10,6 +10,18 @@ namespace PolyFrac
   FlowParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Flow");
+    declare_matrix_entries(prm);
+    declare_fracture_entries(prm);
+    declare_source_and_boundary_entries(prm);
+    declare_parameter_extensions("Flow", prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  FlowParameters::declare_matrix_entries(ParameterHandler &prm)
+  {
     prm.declare_entry("Permeability",
                       "1e-15",
                       Patterns::Anything(),
@@ -38,24 +50,33 @@ namespace PolyFrac
                       "0.1",
                       Patterns::Double(),
                       "Initial porosity phi^0 in [0, 1) (poromechanics).");
+    prm.declare_entry("Fluid density",
+                      "1000",
+                      Patterns::Double(),
+                      "rho_f >= 0 (kg/m^3): under Gravity/Vector g the "
+                      "fluxes follow grad p - rho_f g (matrix and fractures); "
+                      "no effect without gravity.");
     prm.declare_entry("Initial pressure",
                       "0",
                       Patterns::Anything(),
                       "Initial pressure of matrix and fractures, an expression "
-                      "in x, y (, z).");
-    prm.declare_entry("Fracture aperture at contact",
-                      "1e-4",
-                      Patterns::Anything(),
-                      "d_0 >= 0 (m): the hydraulic aperture of a closed "
-                      "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n) "
-                      "with Aperture law = linear. One value for every "
-                      "fracture, or one per fracture (in the order of "
-                      "Fractures/Segments, Polygons or Gmsh physical tags).");
-    prm.declare_entry("Minimum fracture aperture",
-                      "1e-5",
+                      "in x, y (, z), or hydrostatic: p0 = Top pressure + "
+                      "rho_f |g| (z_top - z), z the elevation along -g and "
+                      "z_top the highest point of the mesh (needs "
+                      "Gravity/Vector); the fluid is then at rest.");
+    prm.declare_entry("Top pressure",
+                      "0",
                       Patterns::Double(),
-                      "Floor > 0 (m) of d_f in the cubic law C_f = d_f^3/12, "
-                      "so that a closed fracture still conducts.");
+                      "The pressure in Pa at the top of the mesh of Initial "
+                      "pressure = hydrostatic.");
+    prm.declare_entry("HFV stabilisation",
+                      "auto",
+                      Patterns::Anything(),
+                      "alpha in [1e-6, 1e6] of the hybrid finite volume "
+                      "stabilisation, "
+                      "or auto: sqrt(d) in the matrix and sqrt(d-1) in the "
+                      "fractures (Eymard, Gallouet, Herbin 2010). Affine "
+                      "pressures are exact for every alpha.");
     prm.declare_entry(
       "Face bubbles",
       "true",
@@ -76,6 +97,26 @@ namespace PolyFrac
                       "the oscillations of the nodal pair but changes the "
                       "answers (tight rock: it dominates the permeability); "
                       "0: none.");
+  }
+
+
+
+  void
+  FlowParameters::declare_fracture_entries(ParameterHandler &prm)
+  {
+    prm.declare_entry("Fracture aperture at contact",
+                      "1e-4",
+                      Patterns::Anything(),
+                      "d_0 >= 0 (m): the hydraulic aperture of a closed "
+                      "fracture; d_f = d_0 - [u]_n (opening adds -[u]_n) "
+                      "with Aperture law = linear. One value for every "
+                      "fracture, or one per fracture (in the order of "
+                      "Fractures/Segments, Polygons or Gmsh physical tags).");
+    prm.declare_entry("Minimum fracture aperture",
+                      "1e-5",
+                      Patterns::Double(),
+                      "Floor > 0 (m) of d_f in the cubic law C_f = d_f^3/12, "
+                      "so that a closed fracture still conducts.");
     prm.declare_entry(
       "Fracture compressibility",
       "4.5e-10",
@@ -102,6 +143,13 @@ namespace PolyFrac
                       "fracture aperture in both). One value for every "
                       "fracture, or one per fracture (cubic law or a number "
                       "each): a blocking fracture has a small k_f.");
+  }
+
+
+
+  void
+  FlowParameters::declare_source_and_boundary_entries(ParameterHandler &prm)
+  {
     prm.declare_entry("Matrix source",
                       "0",
                       Patterns::Anything(),
@@ -132,16 +180,6 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Outward volume flux per area on the Flux boundary ids, "
                       "an expression in x, y (, z), t.");
-    declare_parameter_extensions("Flow", prm);
-    prm.declare_entry("HFV stabilisation",
-                      "auto",
-                      Patterns::Anything(),
-                      "alpha in [1e-6, 1e6] of the hybrid finite volume "
-                      "stabilisation, "
-                      "or auto: sqrt(d) in the matrix and sqrt(d-1) in the "
-                      "fractures (Eymard, Gallouet, Herbin 2010). Affine "
-                      "pressures are exact for every alpha.");
-    prm.leave_subsection();
   }
 
 
@@ -181,37 +219,8 @@ namespace PolyFrac
                                                ">= 0 (1/Pa)");
     initial_porosity     = bounded(
       "Initial porosity", 0, std::nextafter(1., 0.), false, "in [0, 1)");
-    initial_pressure    = context.checked_expression("Flow/Initial pressure",
-                                                  prm.get("Initial pressure"),
-                                                  1);
-    aperture_at_contact = ParameterParsing::per_fracture_doubles(
-      prm, where, "Fracture aperture at contact", 0, true, ">= 0 (m)");
-    minimum_aperture =
-      bounded("Minimum fracture aperture", 0, infinity, true, "> 0 (m)");
-    // The cubic law's conductivity d³/(12 η) of the apertures must be a
-    // positive double, or the fracture flow is singular or infinite.
-    const auto check_conductivity =
-      [&](const std::string &entry, const std::string &value, const double d) {
-        const double conductivity =
-          std::pow(std::max(d, minimum_aperture), 3) / (12 * viscosity);
-        AssertThrow(std::isnormal(conductivity) && conductivity > 0,
-                    ExcMessage(where + "<" + entry + "> = " + value +
-                               " with <Viscosity> = " + prm.get("Viscosity") +
-                               " gives the cubic-law conductivity d^3/(12 "
-                               "viscosity) = " +
-                               Utilities::to_string(conductivity) +
-                               ", which is not a positive double (or a "
-                               "denormal one, without digits): give "
-                               "the apertures in m (about 1e-6 to 1e-2) and "
-                               "the viscosity in Pa s (1e-3 for water)."));
-      };
-    check_conductivity("Minimum fracture aperture",
-                       prm.get("Minimum fracture aperture"),
-                       minimum_aperture);
-    for (const double d : aperture_at_contact)
-      check_conductivity("Fracture aperture at contact",
-                         prm.get("Fracture aperture at contact"),
-                         d);
+    read_initial_pressure(prm, where, context);
+    read_fracture_flow(prm, where);
     face_bubbles = prm.get_bool("Face bubbles");
     pressure_stabilisation =
       bounded("Pressure stabilisation", 0, infinity, false, ">= 0");
@@ -223,45 +232,7 @@ namespace PolyFrac
                            "make the pair stable, and the stabilisation would "
                            "only change the answers. Set it to 0, or set "
                            "Face bubbles = false."));
-    fracture_compressibility =
-      bounded("Fracture compressibility", 0, infinity, false, ">= 0 (1/Pa)");
-    normal_transmissibility =
-      ParameterParsing::per_fracture_doubles(prm,
-                                             where,
-                                             "Fracture normal transmissibility",
-                                             0,
-                                             true,
-                                             ">= 0 (m/(Pa s))");
-    fracture_permeability = ParameterParsing::per_fracture_doubles(
-      prm, where, "Fracture permeability", 0, false, "> 0 (m^2)", "cubic law");
-    matrix_source   = context.checked_expression("Flow/Matrix source",
-                                               prm.get("Matrix source"),
-                                               1);
-    fracture_source = context.checked_expression("Flow/Fracture source",
-                                                 prm.get("Fracture source"),
-                                                 1);
-    const std::string fwhere = context.where("Flow");
-    pressure_ids =
-      ParameterParsing::read_ids<unsigned int>(prm.get("Pressure boundary ids"),
-                                               "Pressure boundary ids",
-                                               fwhere);
-    flux_ids =
-      ParameterParsing::read_ids<unsigned int>(prm.get("Flux boundary ids"),
-                                               "Flux boundary ids",
-                                               fwhere);
-    ParameterParsing::check_disjoint(pressure_ids,
-                                     "Pressure boundary ids",
-                                     flux_ids,
-                                     "Flux boundary ids",
-                                     fwhere);
-    pressure_expression =
-      context.checked_expression("Flow/Pressure boundary expression",
-                                 prm.get("Pressure boundary expression"),
-                                 1);
-    flux_expression =
-      context.checked_expression("Flow/Flux boundary expression",
-                                 prm.get("Flux boundary expression"),
-                                 1);
+    read_sources_and_boundary_data(prm, context);
     // Any α > 0 gives a consistent scheme, but the flow matrix's condition
     // number grows like max(α, 1/α).
     stabilisation = ParameterParsing::auto_or_number(prm, "HFV stabilisation");
@@ -342,6 +313,144 @@ namespace PolyFrac
   std::vector<UnusedEntry>
   FlowParameters::unused_entries() const
   {
-    return unused_parameter_extension_entries("Flow", *aperture_law);
+    std::vector<UnusedEntry> unused =
+      unused_parameter_extension_entries("Flow", *aperture_law);
+    if (initial_pressure_kind == InitialPressure::expression)
+      unused.emplace_back("Flow/Top pressure",
+                          "an expression in Flow/Initial pressure");
+    return unused;
+  }
+
+
+
+  void
+  FlowParameters::read_initial_pressure(ParameterHandler       &prm,
+                                        const std::string      &where,
+                                        const ParameterContext &context)
+  {
+    const std::string text = prm.get("Initial pressure");
+    initial_pressure_kind  = Utilities::trim(text) == "hydrostatic" ?
+                               InitialPressure::hydrostatic :
+                               InitialPressure::expression;
+    initial_pressure =
+      initial_pressure_kind == InitialPressure::expression ?
+        context.checked_expression("Flow/Initial pressure", text, 1) :
+        "";
+    fluid_density =
+      ParameterParsing::bounded_double(prm,
+                                       where,
+                                       "Fluid density",
+                                       0,
+                                       true,
+                                       std::numeric_limits<double>::max(),
+                                       false,
+                                       ">= 0 (kg/m^3)");
+    top_pressure = prm.get_double("Top pressure");
+    AssertThrow(initial_pressure_kind == InitialPressure::expression ||
+                  context.has_gravity(),
+                ExcMessage(where +
+                           "<Initial pressure> = hydrostatic is the weight of "
+                           "the fluid under gravity, but Gravity/Vector is "
+                           "zero: set it (e.g. <0, -9.81>) or give the "
+                           "pressure as an expression."));
+  }
+
+
+
+  void
+  FlowParameters::read_fracture_flow(ParameterHandler  &prm,
+                                     const std::string &where)
+  {
+    const double infinity = std::numeric_limits<double>::max();
+    aperture_at_contact   = ParameterParsing::per_fracture_doubles(
+      prm, where, "Fracture aperture at contact", 0, true, ">= 0 (m)");
+    minimum_aperture =
+      ParameterParsing::bounded_double(prm,
+                                       where,
+                                       "Minimum fracture aperture",
+                                       0,
+                                       false,
+                                       infinity,
+                                       true,
+                                       "> 0 (m)");
+    // The cubic law's conductivity d³/(12 η) of the apertures must be a
+    // positive double, or the fracture flow is singular or infinite.
+    const auto check_conductivity =
+      [&](const std::string &entry, const std::string &value, const double d) {
+        const double conductivity =
+          std::pow(std::max(d, minimum_aperture), 3) / (12 * viscosity);
+        AssertThrow(std::isnormal(conductivity) && conductivity > 0,
+                    ExcMessage(where + "<" + entry + "> = " + value +
+                               " with <Viscosity> = " + prm.get("Viscosity") +
+                               " gives the cubic-law conductivity d^3/(12 "
+                               "viscosity) = " +
+                               Utilities::to_string(conductivity) +
+                               ", which is not a positive double (or a "
+                               "denormal one, without digits): give "
+                               "the apertures in m (about 1e-6 to 1e-2) and "
+                               "the viscosity in Pa s (1e-3 for water)."));
+      };
+    check_conductivity("Minimum fracture aperture",
+                       prm.get("Minimum fracture aperture"),
+                       minimum_aperture);
+    for (const double d : aperture_at_contact)
+      check_conductivity("Fracture aperture at contact",
+                         prm.get("Fracture aperture at contact"),
+                         d);
+    fracture_compressibility =
+      ParameterParsing::bounded_double(prm,
+                                       where,
+                                       "Fracture compressibility",
+                                       0,
+                                       true,
+                                       infinity,
+                                       true,
+                                       ">= 0 (1/Pa)");
+    normal_transmissibility =
+      ParameterParsing::per_fracture_doubles(prm,
+                                             where,
+                                             "Fracture normal transmissibility",
+                                             0,
+                                             true,
+                                             ">= 0 (m/(Pa s))");
+    fracture_permeability = ParameterParsing::per_fracture_doubles(
+      prm, where, "Fracture permeability", 0, false, "> 0 (m^2)", "cubic law");
+  }
+
+
+
+  void
+  FlowParameters::read_sources_and_boundary_data(
+    ParameterHandler       &prm,
+    const ParameterContext &context)
+  {
+    matrix_source   = context.checked_expression("Flow/Matrix source",
+                                               prm.get("Matrix source"),
+                                               1);
+    fracture_source = context.checked_expression("Flow/Fracture source",
+                                                 prm.get("Fracture source"),
+                                                 1);
+    const std::string fwhere = context.where("Flow");
+    pressure_ids =
+      ParameterParsing::read_ids<unsigned int>(prm.get("Pressure boundary ids"),
+                                               "Pressure boundary ids",
+                                               fwhere);
+    flux_ids =
+      ParameterParsing::read_ids<unsigned int>(prm.get("Flux boundary ids"),
+                                               "Flux boundary ids",
+                                               fwhere);
+    ParameterParsing::check_disjoint(pressure_ids,
+                                     "Pressure boundary ids",
+                                     flux_ids,
+                                     "Flux boundary ids",
+                                     fwhere);
+    pressure_expression =
+      context.checked_expression("Flow/Pressure boundary expression",
+                                 prm.get("Pressure boundary expression"),
+                                 1);
+    flux_expression =
+      context.checked_expression("Flow/Flux boundary expression",
+                                 prm.get("Flux boundary expression"),
+                                 1);
   }
 } // namespace PolyFrac

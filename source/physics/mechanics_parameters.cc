@@ -11,6 +11,17 @@ namespace PolyFrac
   MechanicsParameters::declare_parameters(ParameterHandler  &prm,
                                           const unsigned int dim)
   {
+    declare_material(prm, dim);
+    declare_loads(prm, dim);
+    declare_initial_stress(prm);
+  }
+
+
+
+  void
+  MechanicsParameters::declare_material(ParameterHandler  &prm,
+                                        const unsigned int dim)
+  {
     prm.enter_subsection("Material");
     // SI units, as everywhere: a sandstone by default (E = 25 GPa,
     // nu = 0.25).
@@ -29,6 +40,15 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Shear modulus in Pa, > 0 (default 10 GPa). One value, "
                       "or <region: value, ...> for every region.");
+    prm.declare_entry("Density",
+                      "2500",
+                      Patterns::Anything(),
+                      "Bulk density >= 0 of the rock with the fluid in its "
+                      "pores, in kg/m^3 (default 2500): under Gravity/Vector "
+                      "g the rock weighs Density times g (a body force added "
+                      "to Body force/Function expression), and the "
+                      "lithostatic initial stress integrates it. One value, "
+                      "or <region: value, ...> for every region.");
     prm.leave_subsection();
 
     prm.enter_subsection("Body force");
@@ -37,7 +57,14 @@ namespace PolyFrac
                       Patterns::Anything(),
                       "Body force f, expressions separated by ';'.");
     prm.leave_subsection();
+  }
 
+
+
+  void
+  MechanicsParameters::declare_loads(ParameterHandler  &prm,
+                                     const unsigned int dim)
+  {
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry("Dirichlet expression",
                       ParameterParsing::zero_vector(dim),
@@ -91,8 +118,41 @@ namespace PolyFrac
                       "locked fracture by tau. Ignored by flow and "
                       "poromechanics.");
     prm.leave_subsection();
+  }
 
+
+
+  void
+  MechanicsParameters::declare_initial_stress(ParameterHandler &prm)
+  {
     prm.enter_subsection("Initial stress");
+    prm.declare_entry(
+      "Kind",
+      "expression",
+      Patterns::Selection(selection_pattern<InitialStress>()),
+      "expression: sigma0 is <Stress>. lithostatic: sigma0 is the weight of "
+      "the rock above (needs Gravity/Vector): the vertical total stress "
+      "sigma_v(z) = -(Top vertical stress + |g| int_z^z_top rho dz) from the "
+      "Material/Density of the regions stacked along the vertical (regions "
+      "that overlap in elevation must have equal densities and Biot "
+      "coefficients), the vertical effective stress sigma'_v = sigma_v + b "
+      "p0 with the hydrostatic pressure p0 of Flow/Initial pressure = "
+      "hydrostatic (poromechanics; sigma'_v = sigma_v without pore "
+      "pressure), and the horizontal effective stresses sigma'_h = K_0 "
+      "sigma'_v (Lateral stress ratio). z is the elevation along -g, z_top "
+      "the highest point of the mesh. With the Neumann traction sigma n = "
+      "(0, -Top vertical stress) on the top and rollers elsewhere, the rock "
+      "and its fluid are at rest.");
+    prm.declare_entry("Lateral stress ratio",
+                      "1",
+                      Patterns::Double(),
+                      "K_0 > 0 (Kind = lithostatic): the horizontal over the "
+                      "vertical effective stress.");
+    prm.declare_entry("Top vertical stress",
+                      "0",
+                      Patterns::Double(),
+                      "The vertical compression >= 0 in Pa at the top of the "
+                      "mesh (Kind = lithostatic): the overburden above it.");
     prm.declare_entry(
       "Stress",
       "0",
@@ -130,6 +190,14 @@ namespace PolyFrac
                                   infinity,
                                   false,
                                   "> 0");
+    density                    = RegionValues::parse(prm.get("Density"),
+                                  material,
+                                  "Density",
+                                  0,
+                                  true,
+                                  infinity,
+                                  false,
+                                  ">= 0 (kg/m^3)");
     prm.leave_subsection();
     check_lame_coefficients(context);
 
@@ -172,11 +240,34 @@ namespace PolyFrac
       context.checked_expression("Fractures/Traction", prm.get("Traction"), 0);
     prm.leave_subsection();
 
+    read_initial_stress(prm, context);
+  }
+
+
+
+  void
+  MechanicsParameters::read_initial_stress(ParameterHandler       &prm,
+                                           const ParameterContext &context)
+  {
     prm.enter_subsection("Initial stress");
-    initial_stress = context.checked_expression("Initial stress/Stress",
+    initial_stress      = context.checked_expression("Initial stress/Stress",
                                                 prm.get("Stress"),
                                                 context.dim * context.dim);
+    initial_stress_kind = parse_selection<InitialStress>(prm.get("Kind"));
+    const std::string where    = context.where("Initial stress") + ": ";
+    const double      infinity = std::numeric_limits<double>::max();
+    lateral_stress_ratio       = ParameterParsing::bounded_double(
+      prm, where, "Lateral stress ratio", 0, false, infinity, false, "> 0");
+    top_vertical_stress = ParameterParsing::bounded_double(
+      prm, where, "Top vertical stress", 0, true, infinity, false, ">= 0 (Pa)");
     prm.leave_subsection();
+    AssertThrow(initial_stress_kind != InitialStress::lithostatic ||
+                  context.has_gravity(),
+                ExcMessage(where +
+                           "<Kind> = lithostatic is the weight of the rock "
+                           "under gravity, but Gravity/Vector is zero: set "
+                           "it (e.g. <0, -9.81>) or give the stress as an "
+                           "expression (Kind = expression)."));
   }
 
 
@@ -304,5 +395,18 @@ namespace PolyFrac
           }
         boundary.dirichlet_components[id] = fixed;
       }
+  }
+
+
+
+  std::vector<UnusedEntry>
+  MechanicsParameters::unused_entries() const
+  {
+    if (initial_stress_kind == InitialStress::lithostatic)
+      return {{"Initial stress/Stress", "Initial stress/Kind = lithostatic"}};
+    return {{"Initial stress/Lateral stress ratio",
+             "Initial stress/Kind = expression"},
+            {"Initial stress/Top vertical stress",
+             "Initial stress/Kind = expression"}};
   }
 } // namespace PolyFrac

@@ -228,18 +228,27 @@ namespace PolyFrac
 
 
   template <int dim>
+  double
+  EnergyBalance<dim>::gravity_drop(const types::global_dof_index a,
+                                   const types::global_dof_index b) const
+  {
+    return flow.gravity_potential_at(a) - flow.gravity_potential_at(b);
+  }
+
+
+
+  template <int dim>
   void
-  EnergyBalance<dim>::add_flow(const Vector<double> &p_before,
-                               const Vector<double> &p_after,
-                               const FlowStepData   &data,
-                               EnergyTerms          &terms) const
+  EnergyBalance<dim>::add_matrix_flow(const Vector<double> &p_before,
+                                      const Vector<double> &p_after,
+                                      const FlowStepData   &data,
+                                      FlowTerms            &flow_terms,
+                                      EnergyTerms          &terms) const
   {
     const auto               &mesh = geometry.mesh;
     const double              dt   = data.time_step;
     const Vector<double>      zero(p_after.size());
     const std::vector<double> h_m = flow.cell_sources(data.time);
-    double storage_dissipation = 0, viscous = 0, stabilisation = 0;
-    double exchange = 0, sources = 0, boundary = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         const double volume = geometry.cells[c].measure;
@@ -248,11 +257,12 @@ namespace PolyFrac
         const double p1     = p_after(pressure_dofs.cell_dof(c));
         terms.stored_before += 0.5 * volume * invM * p0 * p0;
         terms.stored_after += 0.5 * volume * invM * p1 * p1;
-        storage_dissipation += 0.5 * volume * invM * (p1 - p0) * (p1 - p0);
-        sources += dt * volume * h_m[c] * p1;
+        flow_terms.storage += 0.5 * volume * invM * (p1 - p0) * (p1 - p0);
+        flow_terms.sources += dt * volume * h_m[c] * p1;
 
         // Σ_σ F (q_K − q_σ) = q·A p for the fluxes F of p (b_h, and the
-        // increment mobility's form, stored and dissipated).
+        // increment mobility's form, stored and dissipated); the fluxes
+        // dissipate on p − γ and gravity works on the rest.
         const auto darcy = flow.cell_fluxes(c, p_after);
         const auto increment =
           flow.increment_fluxes(c, data, p_before, p_after);
@@ -264,24 +274,39 @@ namespace PolyFrac
             const auto   face_dof = pressure_dofs.face_dof(faces[j], c);
             const double q0       = p0 - p_before(face_dof),
                          q1       = p1 - p_after(face_dof);
-            viscous += dt * darcy[j] * q1;
-            stabilisation += 0.5 * dt * increment[j] * (q1 - q0);
+            const double drop =
+              gravity_drop(pressure_dofs.cell_dof(c), face_dof);
+            flow_terms.viscous += dt * darcy[j] * (q1 - drop);
+            flow_terms.gravity -= dt * darcy[j] * drop;
+            flow_terms.stabilisation += 0.5 * dt * increment[j] * (q1 - q0);
             terms.stored_before += 0.5 * dt * stored_0[j] * q0;
             terms.stored_after += 0.5 * dt * stored_1[j] * q1;
             const auto &face = mesh.faces[faces[j]];
             if (face.at_boundary())
-              boundary -= dt * (darcy[j] + increment[j]) * p_after(face_dof);
+              flow_terms.boundary -=
+                dt * (darcy[j] + increment[j]) * p_after(face_dof);
           }
       }
+  }
 
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::add_fracture_flow(const Vector<double> &p_before,
+                                        const Vector<double> &p_after,
+                                        const FlowStepData   &data,
+                                        FlowTerms            &flow_terms,
+                                        EnergyTerms          &terms) const
+  {
+    const double              dt  = data.time_step;
     const std::vector<double> h_f = flow.fracture_sources(data.time);
-    double                    fracture_viscous = 0;
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
         const auto  &ff      = network.fracture_faces[i];
         const double measure = geometry.faces[ff.face].measure;
         const double p_f     = p_after(pressure_dofs.fracture_face_dof(i));
-        sources += dt * measure * h_f[i] * p_f;
+        flow_terms.sources += dt * measure * h_f[i] * p_f;
         // The fluid storage d c_f of the step's aperture (the fixed-stress
         // relaxation in data.fracture_storage vanishes at convergence).
         const double c =
@@ -289,13 +314,13 @@ namespace PolyFrac
         const double p0 = p_before(pressure_dofs.fracture_face_dof(i));
         terms.stored_before += 0.5 * c * p0 * p0;
         terms.stored_after += 0.5 * c * p_f * p_f;
-        storage_dissipation += 0.5 * c * (p_f - p0) * (p_f - p0);
+        flow_terms.storage += 0.5 * c * (p_f - p0) * (p_f - p0);
         for (const unsigned int cell : {ff.plus_cell, ff.minus_cell})
           if (flow.mobility(cell) > 0)
             {
               const double jump =
                 p_after(pressure_dofs.face_dof(ff.face, cell)) - p_f;
-              exchange +=
+              flow_terms.exchange +=
                 dt * measure * flow.normal_transmissibility(i) * jump * jump;
             }
         const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);
@@ -303,23 +328,44 @@ namespace PolyFrac
           {
             const unsigned int e   = edges.face_edges[i][k].edge;
             const double       p_e = p_after(pressure_dofs.edge_dof(e));
-            fracture_viscous += dt * fluxes[k] * (p_f - p_e);
+            const double drop = gravity_drop(pressure_dofs.fracture_face_dof(i),
+                                             pressure_dofs.edge_dof(e));
+            flow_terms.fracture_viscous += dt * fluxes[k] * (p_f - p_e - drop);
+            flow_terms.gravity -= dt * fluxes[k] * drop;
             for (const types::boundary_id id : edges.edges[e].boundary_ids)
               if (listed(flow.parameters().pressure_ids, id))
                 {
-                  boundary -= dt * fluxes[k] * p_e;
+                  flow_terms.boundary -= dt * fluxes[k] * p_e;
                   break;
                 }
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::add_flow(const Vector<double> &p_before,
+                               const Vector<double> &p_after,
+                               const FlowStepData   &data,
+                               EnergyTerms          &terms) const
+  {
+    FlowTerms flow_terms;
+    add_matrix_flow(p_before, p_after, data, flow_terms, terms);
+    add_fracture_flow(p_before, p_after, data, flow_terms, terms);
     terms.dissipation.emplace_back("implicit Euler (storage)",
-                                   storage_dissipation);
-    terms.dissipation.emplace_back("pressure stabilisation", stabilisation);
-    terms.dissipation.emplace_back("viscous (matrix)", viscous);
-    terms.dissipation.emplace_back("viscous (fractures)", fracture_viscous);
-    terms.dissipation.emplace_back("exchange", exchange);
-    terms.work.emplace_back("sources", sources);
-    terms.work.emplace_back("boundary data", boundary);
+                                   flow_terms.storage);
+    terms.dissipation.emplace_back("pressure stabilisation",
+                                   flow_terms.stabilisation);
+    terms.dissipation.emplace_back("viscous (matrix)", flow_terms.viscous);
+    terms.dissipation.emplace_back("viscous (fractures)",
+                                   flow_terms.fracture_viscous);
+    terms.dissipation.emplace_back("exchange", flow_terms.exchange);
+    terms.work.emplace_back("sources", flow_terms.sources);
+    terms.work.emplace_back("boundary data", flow_terms.boundary);
+    if (flow_terms.gravity != 0)
+      terms.work.emplace_back("gravity on the fluid", flow_terms.gravity);
   }
 
 

@@ -978,6 +978,55 @@ CASES = {
          "ids> = 1, 2 gives 2 ids"],
         files={"scene.prm": section("Mesh", Region_boxes="-1, -1 : 1, 0",
                                     Region_box_ids="1, 2")}),
+    "lithostatic_without_gravity": case(
+        "`Initial stress/Kind = lithostatic` without Gravity/Vector",
+        ["subsection <Initial stress>: <Kind> = lithostatic is the weight of "
+         "the rock under gravity, but Gravity/Vector is zero"],
+        files={"scene.prm": section("Initial stress", Kind="lithostatic")}),
+    "hydrostatic_without_gravity": case(
+        "`Flow/Initial pressure = hydrostatic` without Gravity/Vector",
+        ["subsection <Flow>: <Initial pressure> = hydrostatic is the weight "
+         "of the fluid under gravity, but Gravity/Vector is zero"],
+        files={"scene.prm": section("Model", Model="flow")
+               + section("Flow", Initial_pressure="hydrostatic")}),
+    "gravity_components": case(
+        "`Gravity/Vector = 0, 0, -9.81` in 2D",
+        ["subsection <Gravity>, <Vector>: the point <0, 0, -9.81> has 3 "
+         "coordinates, expected 2"],
+        files={"scene.prm": section("Gravity", Vector="0, 0, -9.81")}),
+    "density_negative": case(
+        "`Material/Density = -2500`",
+        ["<Density> = -2500: each value must be >= 0 (kg/m^3)"],
+        files={"scene.prm": section("Material", Density="-2500")}),
+    "lithostatic_pressure_expression": case(
+        "`Initial stress/Kind = lithostatic` under poromechanics with "
+        "`Flow/Initial pressure` an expression",
+        ["Kind = lithostatic with Model = poromechanics takes the effective "
+         "stress of the rock over a fluid at rest, but Flow/Initial pressure "
+         "is an expression: set it to hydrostatic"],
+        files={"scene.prm": section("Model", Model="poromechanics")
+               + section("Gravity", Vector="0, -9.81")
+               + section("Initial stress", Kind="lithostatic")}),
+    "lithostatic_regions_side_by_side": case(
+        "`Initial stress/Kind = lithostatic` with two regions of different "
+        "densities side by side (x < 0 and x > 0)",
+        ["Kind = lithostatic stacks the regions along the vertical, but "
+         "regions 0 and 1 share the elevations",
+         "with different Material/Density or Flow/Biot coefficient"],
+        files={"scene.prm": section("Mesh", Region_boxes="-1, -1 : 0, 1",
+                                    Region_box_ids="1")
+               + section("Gravity", Vector="0, -9.81")
+               + section("Material", Density="0: 2000, 1: 2500")
+               + section("Initial stress", Kind="lithostatic")},
+        stage="level"),
+    "analytic_solution_with_gravity": case(
+        "`Analytic solution = terzaghi` with `Gravity/Vector = 0, -9.81`",
+        ["Exact solution/Analytic solution = terzaghi: it is the solution of "
+         "a weightless column: set Gravity/Vector to 0"],
+        files={"scene.prm": section("Model", Model="poromechanics")
+               + section("Gravity", Vector="0, -9.81")
+               + section("Exact solution", Analytic_solution="terzaghi",
+                         Analytic_load="1e6")}),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
         ["<Lame mu> = 0: each value must be > 0, not <0>"],

@@ -185,6 +185,18 @@ namespace PolyFrac
     void
     read_constants();
 
+    /** Gives the mechanics of a model with pore pressure the fluid at rest
+     * of Flow (density, top pressure, Biot coefficients) for Initial
+     * stress/Kind = lithostatic, which then needs Flow/Initial pressure =
+     * hydrostatic (throws naming both entries otherwise). */
+    void
+    set_pore_fluid_at_rest();
+
+    /** Reads Gravity/Vector into ParameterContext::gravity; throws naming
+     * the entry unless it has dim finite components. */
+    void
+    read_gravity();
+
     /** Applies one `--set Subsection/Entry=value` of the command line;
      * throws naming the argument. */
     void

@@ -222,6 +222,29 @@ namespace PolyFrac
               Vector<double>       &residual);
 
     /**
+     * The Newton iterations of a step from the iterate @p x (updated) for
+     * the step from @p start, starting with the contact states
+     * @p guess_states; the increments relative to the floors
+     * @p displacement_floor and @p pressure_floor (relative_increment()).
+     * Where the contact states cycle or the increments stagnate, β is
+     * divided by 10 (ContactMechanics::reduce_complementarity_parameter());
+     * a step with the states of the last factorisation reuses it while the
+     * increments contract. Fills @p result (its data gets the apertures and
+     * storage of the last iterate); returns the contact states there.
+     */
+    ContactStates
+    iterate(Vector<double>      &x,
+            const StepStart     &start,
+            const ContactStates &guess_states,
+            const double         displacement_floor,
+            const double         pressure_floor,
+            Result              &result);
+
+    /** Why the iterations of @p result did not converge. */
+    std::string
+    not_converged_message(const Result &result) const;
+
+    /**
      * The Newton step from @p x along @p dx, damped: x + α dx with the
      * largest α of 1, 1/2, ..., 1/64 whose merit ‖S r‖² (S: the scaling of
      * the last factorise()) is smaller than that of @p x, whose residual is

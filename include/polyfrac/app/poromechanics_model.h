@@ -243,6 +243,14 @@ namespace PolyFrac
     std::vector<double>
     make_fixed_stress_coefficients() const;
 
+    /** δ b² h_K²/(λ + 2μ) per cell: increment_mobility() times Δt. */
+    std::vector<double>
+    make_increment_mobility_weights() const;
+
+    /** The largest λ + 2μ of the cells: the stiffest region's. */
+    double
+    stiffest_modulus() const;
+
     /** The floors of the step at the time the elasticity is set to, with
      * σ_ref the largest of Elasticity::load_scale(), |@p p| and the
      * multipliers |λ_σ| of the state. */
@@ -356,6 +364,10 @@ namespace PolyFrac
     std::unique_ptr<Newton> newton;
     /** L = b²/(λ + 2μ/d) per cell (its region's b, λ, μ). */
     const std::vector<double> fixed_stress_coefficients;
+    /** δ b² h_K²/(λ + 2μ) per cell (increment_mobility()). */
+    const std::vector<double> increment_mobility_weights;
+    /** The largest λ + 2μ of the cells (scales()). */
+    const double largest_modulus;
     /** a_σ per fracture face. */
     std::vector<double> fracture_relaxation;
     /** The state: displacement, multipliers, contact states. */

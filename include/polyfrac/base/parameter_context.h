@@ -3,10 +3,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,7 +20,7 @@ namespace PolyFrac
   /**
    * What a component that parses its own subsection knows of the scene
    * besides its entries: the parameter file (named in every message), the
-   * dimension and the constants of the expressions.
+   * dimension, the constants of the expressions and gravity.
    *
    * Each component's parameters (MeshParameters, FlowParameters, ...)
    * follow one pattern, deal.II's and ASPECT's:
@@ -42,6 +44,30 @@ namespace PolyFrac
     unsigned int dim;
     /** Expressions/Function constants, as name -> value. */
     std::map<std::string, double> constants;
+    /** Gravity/Vector: the acceleration of gravity g in m/s² (components
+     * beyond dim are zero); zero (the default) means no gravity. */
+    Tensor<1, 3> gravity;
+
+    /** Whether Gravity/Vector is not zero. */
+    bool
+    has_gravity() const
+    {
+      return gravity.norm() > 0;
+    }
+
+    /** The elevation of @p x: its coordinate along −g/|g| (0 without
+     * gravity). */
+    template <int dim>
+    double
+    elevation(const Point<dim> &x) const
+    {
+      if (!has_gravity())
+        return 0;
+      double along_g = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        along_g += gravity[d] * x[d];
+      return -along_g / gravity.norm();
+    }
 
     /** "In <file>, subsection <@p subsection>": how a message starts. */
     std::string
@@ -150,6 +176,16 @@ namespace PolyFrac
      * not inside another name). */
     bool
     uses_time(const std::string &text);
+
+    /** The number @p text if it is a finite double between @p lower and
+     * @p upper (each bound included or not), else nothing: the check the
+     * readers of numbers share, each with its own message. */
+    std::optional<double>
+    checked_number(const std::string &text,
+                   const double       lower,
+                   const bool         lower_included,
+                   const double       upper,
+                   const bool         upper_included);
 
     /**
      * The double @p entry of the current subsection of @p prm; throws,

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -489,6 +490,49 @@ namespace PolyFrac
      * on (and their timings) to @p out. */
     void
     finish(MechanicalState<dim> &state, std::ostream &out) const;
+
+    /** The states and counts of the faces of @p R at Newton iteration
+     * @p iteration, printed to @p out; returns the states, one code per
+     * face. */
+    std::vector<int>
+    report_iteration(const Residual    &R,
+                     const unsigned int iteration,
+                     std::ostream      &out) const;
+
+    /** The active sets a Newton method has seen: whether it cycles (a set
+     * seen before, not the last) or stagnates (no new best merit). */
+    struct ActiveSetHistory
+    {
+      /** The sets seen since the last restart. */
+      std::set<std::vector<int>> seen;
+      /** The set of the last iteration. */
+      std::vector<int> last;
+      /** The best merit since the last restart, and its iteration. */
+      double       best_merit     = std::numeric_limits<double>::max();
+      unsigned int best_iteration = 0;
+
+      /** Records the set @p states with merit @p merit_value at
+       * @p iteration; returns whether it cycles. */
+      bool
+      record(const std::vector<int> &states,
+             const double            merit_value,
+             const unsigned int      iteration);
+
+      /** Forgets the sets seen (and the last one if @p forget_last) and the
+       * best merit, from @p iteration on. */
+      void
+      restart(const unsigned int iteration, const bool forget_last);
+    };
+
+    /** The largest of 1, 1/2, ..., 1/64 whose step from @p x along
+     * @p step lowers the merit of @p R at load @p load, reported to
+     * @p out. */
+    double
+    damped_step(const Vector<double> &x,
+                const Vector<double> &step,
+                const Residual       &R,
+                const double          load,
+                std::ostream         &out);
 
     /** Newton on one load step to @p load, from @p x; @p continued: from
      * the states of a converged load step before it. False if it did not

@@ -17,6 +17,7 @@
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
+#include <polyfrac/physics/gravity.h>
 #include <polyfrac/physics/mechanical_state.h>
 #include <polyfrac/physics/mechanics_parameters.h>
 
@@ -126,7 +127,12 @@ namespace PolyFrac
       return mechanics.lame_lambda(geometry.mesh.cells[cell].region);
     }
 
-    /** σ0(@p x) of Initial stress/Stress (or of @p stress, a thread's own
+    /** ρ g in polytope @p cell: the weight of its rock per volume
+     * (Material/Density of its region, Gravity/Vector). */
+    Tensor<1, dim>
+    weight(const unsigned int cell) const;
+
+    /** σ0(@p x) of Initial stress (or of @p stress, a thread's own
      * copy); throws naming the point if it is not symmetric. */
     Tensor<2, dim>
     initial_stress_value(const Point<dim>    &x,
@@ -239,6 +245,16 @@ namespace PolyFrac
     local_load(const LocalReconstruction<dim> &local,
                const unsigned int              cell) const;
 
+    /** Its in-situ part −|K| σ0(x̄_K):ε_K(v) alone. */
+    Vector<double>
+    local_initial_stress_load(const LocalReconstruction<dim> &local,
+                              const unsigned int              cell) const;
+
+    /** f(@p x) + ρ g in polytope @p cell: the body force with the weight,
+     * at the time of set_time(). */
+    Tensor<1, dim>
+    body_force_value(const unsigned int cell, const Point<dim> &x) const;
+
   private:
     /** @p system_rhs += @p loads summed over the ranks (each rank's
      * contributions on entry; @p loads holds the sum on return). */
@@ -264,21 +280,30 @@ namespace PolyFrac
     bool
     on_neumann_boundary(const unsigned int face) const;
 
-    /** ∫_K f·Π^K v − |K| σ0:ε_K(v) for the local unknowns of @p local, on
-     * cell @p cell, with the body force @p force and the in-situ stress
-     * @p stress (the members, or a thread's own copies). */
+    /** ∫_K (f + ρ g)·Π^K v − |K| σ0:ε_K(v) for the local unknowns of
+     * @p local, on cell @p cell, with the body force @p force, the weight
+     * ρ g of the cell and the in-situ stress @p stress (the members, or a
+     * thread's own copies). */
     Vector<double>
     cell_load(const LocalReconstruction<dim> &local,
               const unsigned int              cell,
               const Function<dim>            &force,
               const Function<dim>            &stress) const;
 
+    /** −|K| σ0(x̄_K):ε_K(v) for the local unknowns of @p local on cell
+     * @p cell, with the in-situ stress @p stress. */
+    Vector<double>
+    initial_stress_load(const LocalReconstruction<dim> &local,
+                        const unsigned int              cell,
+                        const Function<dim>            &stress) const;
+
     /** A new Body force/Function expression at time @p time. */
     std::unique_ptr<FunctionParser<dim>>
     make_body_force(const double time) const;
 
-    /** A new Initial stress/Stress at time @p time. */
-    std::unique_ptr<FunctionParser<dim>>
+    /** A new Initial stress at time @p time: Stress, or a copy of the
+     * lithostatic stress. */
+    std::unique_ptr<Function<dim>>
     make_initial_stress(const double time) const;
 
     /**
@@ -313,8 +338,13 @@ namespace PolyFrac
     const FractureNetwork<dim>   &network;
     const DoFMap<dim>            &dofs;
 
+    /** The stress of Initial stress/Kind = lithostatic (else none). */
+    std::unique_ptr<const LithostaticStress<dim>> lithostatic;
+
     std::unique_ptr<FunctionParser<dim>> body_force, dirichlet, neumann,
-      fracture_pressure, traction, initial_stress;
+      fracture_pressure, traction;
+    /** σ0: Initial stress/Stress or #lithostatic. */
+    std::unique_ptr<Function<dim>> initial_stress;
 
     /** Dirichlet data replacing #dirichlet (set_dirichlet_data()). */
     std::shared_ptr<Function<dim>> dirichlet_data;

@@ -36,9 +36,14 @@ namespace PolyFrac
    * and S_K gains h_K^{d−2} s_σ² plus the nodal mismatch u_{Ks} − Π^K u(x_s)
    * that the bubble's gradient causes (the same reconstruction as the
    * fracture bubbles, LocalReconstruction, with trace weight 1). The
-   * stiffness, the load and the divergence of the bubbles come from the
-   * scheme's own ∇^K, Π^K and S_K (Elasticity::local_stiffness(),
-   * Elasticity::local_load()): nothing is tuned.
+   * stiffness, the in-situ load and the divergence of the bubbles come from
+   * the scheme's own ∇^K and S_K (Elasticity::local_stiffness(),
+   * Elasticity::local_initial_stress_load()): nothing is tuned. The body
+   * force (with the weight ρ g) loads a bubble on its diamond, Σ_K (f_K(x̄_σ)·
+   * n_σ) |σ| |(x̄_σ − x̄_K)·n_σ|: the in-situ load is the difference
+   * |σ| ((σ0_L − σ0_K) n_σ)·n_σ across the diamond, so a stress that varies
+   * along n_σ and balances its body force (a lithostatic column) leaves
+   * the bubbles at rest.
    *
    * A field whose nodal values are affine has zero bubbles in the energy
    * minimiser, and a pressure that the nodal divergence already balances

@@ -275,6 +275,14 @@ namespace PolyFrac
     double
     normal_transmissibility(const unsigned int i) const;
 
+    /** γ = ρ_f g·x at the place of the unknown @p dof (0 without
+     * gravity): the fluxes are those of the potential p − γ. */
+    double
+    gravity_potential_at(const types::global_dof_index dof) const
+    {
+      return gravity_potential.size() == 0 ? 0. : gravity_potential(dof);
+    }
+
     /** K_m(x̄_K)/η of cell @p c. */
     double
     mobility(const unsigned int c) const
@@ -409,6 +417,23 @@ namespace PolyFrac
       boundary_pressure, boundary_flux;
     /** The aperture law. */
     std::unique_ptr<const ApertureLaw<dim>> law;
+    /** γ = ρ_f g·x at the place of every unknown (cell, face, fracture
+     * face and edge centroids), or empty without gravity: the fluxes are
+     * those of the potential p − γ. */
+    Vector<double> gravity_potential;
+
+    /** The potential p − γ of @p pressure on the unknowns @p local_dofs. */
+    Vector<double>
+    potential(const std::vector<types::global_dof_index> &local_dofs,
+              const Vector<double>                       &pressure) const;
+
+    /** Adds @p coefficient @p matrix γ on the unknowns @p local_dofs to
+     * @p local_rhs: the flux that gravity drives (nothing without it). */
+    void
+    add_gravity_flux(const FullMatrix<double>                   &matrix,
+                     const double                                coefficient,
+                     const std::vector<types::global_dof_index> &local_dofs,
+                     Vector<double> &local_rhs) const;
 
     /** The value of the per-fracture property @p values (a FlowParameters
      * list) for fracture face @p i. */

@@ -25,6 +25,16 @@ namespace PolyFrac
    */
   struct FlowParameters
   {
+    /** What Flow/Initial pressure gives. */
+    enum class InitialPressure
+    {
+      /** An expression in x, y (, z). */
+      expression,
+      /** The fluid at rest under gravity: Top pressure + ρ_f |g| (z_top −
+       * z). */
+      hydrostatic
+    };
+
     /** Declares the subsection Flow. */
     static void
     declare_parameters(ParameterHandler &prm);
@@ -50,6 +60,38 @@ namespace PolyFrac
     std::vector<UnusedEntry>
     unused_entries() const;
 
+    /** Declares the entries of the rock, the fluid, the HFV scheme and the
+     * stable pair (in the subsection Flow). */
+    static void
+    declare_matrix_entries(ParameterHandler &prm);
+
+    /** Declares the fracture flow entries (in the subsection Flow). */
+    static void
+    declare_fracture_entries(ParameterHandler &prm);
+
+    /** Declares the sources and boundary data (in the subsection Flow). */
+    static void
+    declare_source_and_boundary_entries(ParameterHandler &prm);
+
+    /** Reads the fracture flow entries (@p where: file and subsection, for
+     * the messages): d_0 and d_min with the cubic law's conductivity
+     * checked, c_f, Λ_f, k_f. */
+    void
+    read_fracture_flow(ParameterHandler &prm, const std::string &where);
+
+    /** Reads the sources and the boundary data. */
+    void
+    read_sources_and_boundary_data(ParameterHandler       &prm,
+                                   const ParameterContext &context);
+
+    /** Reads Initial pressure, Fluid density and Top pressure (@p where:
+     * file and subsection, for the messages); refuses hydrostatic without
+     * gravity. */
+    void
+    read_initial_pressure(ParameterHandler       &prm,
+                          const std::string      &where,
+                          const ParameterContext &context);
+
     /** Permeability K_m ≥ 0 of the matrix (isotropic), an expression
      * (empty if it is given per region). */
     std::string permeability;
@@ -65,8 +107,15 @@ namespace PolyFrac
     RegionValues inverse_biot_modulus;
     /** Initial porosity φ^0 in [0, 1) (poromechanics). */
     double initial_porosity;
-    /** Initial pressure p^0 of matrix and fractures, an expression. */
+    /** Initial pressure p^0 of matrix and fractures, an expression (empty
+     * if hydrostatic). */
     std::string initial_pressure;
+    /** Whether Flow/Initial pressure is an expression or hydrostatic. */
+    InitialPressure initial_pressure_kind = InitialPressure::expression;
+    /** Flow/Top pressure: p^0 at the top of the mesh when hydrostatic. */
+    double top_pressure = 0;
+    /** Flow/Fluid density ρ_f ≥ 0: the fluxes follow ∇p − ρ_f g. */
+    double fluid_density = 0;
     /** Fracture aperture at contact d_0 ≥ 0, the datum of the aperture
      * law (d_f = d_0 − [u]_n with the default law): one value for all
      * fractures or one per fracture (ParameterParsing::per_fracture_value()).

@@ -5,8 +5,11 @@
 
 #include <polyfrac/base/parameter_context.h>
 #include <polyfrac/base/region_values.h>
+#include <polyfrac/base/selection.h>
 
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,32 @@ namespace PolyFrac
    */
   struct MechanicsParameters
   {
+    /** Initial stress/Kind: where the in-situ effective stress σ0 comes
+     * from. */
+    enum class InitialStress
+    {
+      /** Initial stress/Stress, an expression. */
+      expression,
+      /** The weight of the rock above (LithostaticStress). */
+      lithostatic
+    };
+
+    /**
+     * The fluid at rest in the pores, which the lithostatic effective stress
+     * of a model with pore pressure (poromechanics) subtracts: the
+     * hydrostatic pressure p0 = p_top + ρ_f |g| (z_top − z) of Flow/Initial
+     * pressure = hydrostatic, and the Biot coefficient b of each region.
+     */
+    struct PoreFluidAtRest
+    {
+      /** Flow/Fluid density ρ_f. */
+      double fluid_density = 0;
+      /** Flow/Top pressure p_top. */
+      double top_pressure = 0;
+      /** Flow/Biot coefficient, per region. */
+      RegionValues biot_coefficient;
+    };
+
     /** Declares these entries for dimension @p dim. */
     static void
     declare_parameters(ParameterHandler &prm, const unsigned int dim);
@@ -31,10 +60,18 @@ namespace PolyFrac
     void
     parse_parameters(ParameterHandler &prm, const ParameterContext &context);
 
+    /** The entries of Initial stress that its Kind leaves unused, each with
+     * the choice. */
+    std::vector<UnusedEntry>
+    unused_entries() const;
+
     /** Material/Lame lambda: the Lamé coefficient λ, per region. */
     RegionValues lame_lambda;
     /** Material/Lame mu: the shear modulus μ > 0, per region. */
     RegionValues lame_mu;
+    /** Material/Density: the bulk density ρ ≥ 0 of the (saturated) rock,
+     * per region; the rock weighs ρ g under Gravity/Vector. */
+    RegionValues density;
 
     /** Body force/Function expression: f, a vector expression. */
     std::string body_force;
@@ -70,6 +107,18 @@ namespace PolyFrac
      * expressions row by row (';'-separated), or 0. The momentum balance
      * gains −Σ_K |K| σ0(x̄_K):ε_K(v) on its right-hand side. */
     std::string initial_stress;
+    /** Initial stress/Kind. */
+    InitialStress initial_stress_kind = InitialStress::expression;
+    /** Initial stress/Lateral stress ratio K_0 > 0 (lithostatic): σ'_h =
+     * K_0 σ'_v. */
+    double lateral_stress_ratio = 1;
+    /** Initial stress/Top vertical stress ≥ 0 (lithostatic): the
+     * compression σ_v at the top of the mesh, the overburden above it. */
+    double top_vertical_stress = 0;
+    /** The pore fluid at rest of a model with pore pressure, which the
+     * lithostatic effective stress subtracts (none: σ0 is the total
+     * stress). Set by the scene (Parameters), which knows the model. */
+    std::optional<PoreFluidAtRest> pore_fluid_at_rest;
 
   private:
     /** Throws unless mu > 0 and lambda > -2 mu/dim in every region, and
@@ -91,6 +140,33 @@ namespace PolyFrac
     void
     read_dirichlet_components(const std::string      &text,
                               const ParameterContext &context);
+
+    /** Declares the subsections Material and Body force. */
+    static void
+    declare_material(ParameterHandler &prm, const unsigned int dim);
+
+    /** Declares the subsection Boundary conditions and the fracture loads
+     * (Fractures/Pressure, Traction). */
+    static void
+    declare_loads(ParameterHandler &prm, const unsigned int dim);
+
+    /** Declares the subsection Initial stress. */
+    static void
+    declare_initial_stress(ParameterHandler &prm);
+
+    /** Reads the subsection Initial stress; throws naming the entry, and
+     * refuses Kind = lithostatic without gravity. */
+    void
+    read_initial_stress(ParameterHandler &prm, const ParameterContext &context);
+  };
+
+  /** The names of MechanicsParameters::InitialStress. */
+  template <>
+  struct SelectionNames<MechanicsParameters::InitialStress>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {
+      {"expression", "lithostatic"}};
   };
 } // namespace PolyFrac
 

@@ -120,6 +120,42 @@ namespace PolyFrac
                   const FrictionLaw<dim>     *friction,
                   EnergyTerms                &terms) const;
 
+    /** The sums of add_flow(), over the matrix and the fractures. */
+    struct FlowTerms
+    {
+      /** Dissipation of implicit Euler in the storage. */
+      double storage = 0;
+      /** Viscous dissipation (on p − γ) in the matrix and the fractures. */
+      double viscous = 0, fracture_viscous = 0;
+      /** Dissipation of the pressure stabilisation, and of the exchange. */
+      double stabilisation = 0, exchange = 0;
+      /** Work of the sources, the boundary data and gravity. */
+      double sources = 0, boundary = 0, gravity = 0;
+    };
+
+    /** γ_a − γ_b (Flow::gravity_potential_at()): the potential difference
+     * that gravity adds between the unknowns @p a and @p b. */
+    double
+    gravity_drop(const types::global_dof_index a,
+                 const types::global_dof_index b) const;
+
+    /** The matrix cells' part of add_flow() into @p flow_terms, and their
+     * stored energy into @p terms. */
+    void
+    add_matrix_flow(const Vector<double> &p_before,
+                    const Vector<double> &p_after,
+                    const FlowStepData   &data,
+                    FlowTerms            &flow_terms,
+                    EnergyTerms          &terms) const;
+
+    /** The fracture faces' part of add_flow(). */
+    void
+    add_fracture_flow(const Vector<double> &p_before,
+                      const Vector<double> &p_after,
+                      const FlowStepData   &data,
+                      FlowTerms            &flow_terms,
+                      EnergyTerms          &terms) const;
+
     /** Storage, stabilisation, viscous dissipation, exchange, sources and
      * boundary data of the matrix and fracture flow. */
     void
