@@ -10,6 +10,7 @@
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/base/progress_line.h>
 #include <polyfrac/discretization/mesh_builder.h>
+#include <polyfrac/io/line_probes.h>
 #include <polyfrac/postprocessing/verification.h>
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -28,8 +29,9 @@ namespace PolyFrac
 {
   /**
    * The output files of one level: the matrix and fracture VTU series over
-   * its steps (`solution-level-K`, `fractures-level-K`) and, for a
-   * time-dependent model, `time_series-level-K.csv`, one row per step.
+   * its steps (`solution-level-K`, `fractures-level-K`), the line probes
+   * (`line-NAME-level-K.csv`) and, for a time-dependent model,
+   * `time_series-level-K.csv`, one row per step.
    */
   template <int dim>
   class Simulator<dim>::LevelOutput
@@ -45,7 +47,7 @@ namespace PolyFrac
                 const MPI_Comm     communicator);
 
     /** Writes the state of @p model at time @p t as the next VTU step (if
-     * Output/Write VTU). */
+     * Output/Write VTU) and samples it along the line probes. */
     void
     write_state(const Model<dim> &model, const double t);
 
@@ -78,8 +80,12 @@ namespace PolyFrac
     void
     append_to_time_series(const std::string &text);
 
-    const Parameters            &prm;
-    std::optional<VtuSeries>     solution, fractures;
+    const Parameters        &prm;
+    std::optional<VtuSeries> solution, fractures;
+    /** One per Output/Line probes line. */
+    std::vector<std::unique_ptr<LineProbeSeries<dim>>> probes;
+    /** Whether the mesh has fracture faces. */
+    const bool                   with_fractures;
     std::string                  time_series_name;
     std::optional<std::ofstream> time_series;
     /** What the time series file holds so far (rank 0). */
@@ -266,8 +272,12 @@ namespace PolyFrac
                                            const bool         time_series,
                                            const MPI_Comm     communicator)
     : prm(prm)
+    , with_fractures(with_fractures)
   {
     const std::string level_name = "-level-" + std::to_string(level);
+    for (const LineProbe &probe : prm.output.line_probes)
+      probes.push_back(std::make_unique<LineProbeSeries<dim>>(
+        probe, prm.output.directory, level, communicator));
     const auto compression = compression_level(prm.output.vtu_compression);
     if (prm.output.write_vtu)
       {
@@ -319,6 +329,8 @@ namespace PolyFrac
       if (*series)
         archive << **series;
     archive << time_series_text;
+    for (const auto &probe : probes)
+      archive << probe->text();
   }
 
 
@@ -340,6 +352,11 @@ namespace PolyFrac
         time_series_text.clear();
         append_to_time_series(text);
       }
+    for (const auto &probe : probes)
+      {
+        archive >> text;
+        probe->restore(text);
+      }
   }
 
 
@@ -349,10 +366,17 @@ namespace PolyFrac
   Simulator<dim>::LevelOutput::write_state(const Model<dim> &model,
                                            const double      t)
   {
+    if (!solution && probes.empty())
+      return;
+    const PatchData<dim, dim>                    matrix = model.matrix_output();
+    const std::optional<PatchData<dim - 1, dim>> fracture_faces =
+      with_fractures ? std::optional(model.fracture_output()) : std::nullopt;
     if (solution)
-      solution->write(model.matrix_output(), t);
+      solution->write(matrix, t);
     if (fractures)
-      fractures->write(model.fracture_output(), t);
+      fractures->write(*fracture_faces, t);
+    for (const auto &probe : probes)
+      probe->write(matrix, fracture_faces ? &*fracture_faces : nullptr, t);
   }
 
 
@@ -430,6 +454,8 @@ namespace PolyFrac
           names.push_back(name);
     if (time_series)
       names.push_back(time_series_name);
+    for (const auto &probe : probes)
+      names.push_back(probe->name());
     return names;
   }
 

@@ -1,5 +1,8 @@
 #include <polyfrac/io/output_parameters.h>
 
+#include <cmath>
+#include <optional>
+
 namespace PolyFrac
 {
   void
@@ -41,6 +44,18 @@ namespace PolyFrac
       "stopped by SIGINT or SIGTERM, which it always is after the step in "
       "progress, with a checkpoint). polyfrac FILE.prm --resume continues "
       "from it and ends with the files of an uninterrupted run.");
+    prm.declare_entry(
+      "Line probes",
+      "",
+      Patterns::Anything(),
+      "Lines along which the fields constant over a cell (pressure, "
+      "stresses, Darcy velocity, porosity; on the fractures their pressure, "
+      "aperture, jumps and tractions) are sampled at every output time: "
+      "<NAME: x0, y0[, z0] : x1, y1[, z1] : N; ...>, N >= 2 points evenly "
+      "spaced from the first point to the second, both included. Each line "
+      "is written to line-NAME-level-K.csv (columns time, arc_length, x, "
+      "y[, z], then the fields; a field is empty where the point lies in "
+      "no cell, or for the fracture fields on no fracture face).");
     prm.leave_subsection();
   }
 
@@ -63,6 +78,51 @@ namespace PolyFrac
       parse_selection<VtuCompression>(prm.get("VTU compression"));
     print_timings       = prm.get_bool("Print timings");
     checkpoint_interval = prm.get_integer("Checkpoint interval");
+    read_line_probes(prm.get("Line probes"), context);
     prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::read_line_probes(const std::string      &text,
+                                     const ParameterContext &context)
+  {
+    line_probes.clear();
+    const std::string where = context.where("Output") + ", <Line probes>";
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        const std::vector<std::string> parts =
+          Utilities::split_string_list(item, ':');
+        const std::string in_item = where + ": <" + item + ">";
+        AssertThrow(parts.size() == 4,
+                    ExcMessage(in_item +
+                               " is not <NAME: x0, y0[, z0] : x1, y1[, z1] : "
+                               "N> (4 parts separated by ':')."));
+        LineProbe probe;
+        probe.name = parts[0];
+        AssertThrow(!probe.name.empty() &&
+                      probe.name.find_first_not_of(
+                        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                        "0123456789_-") == std::string::npos,
+                    ExcMessage(in_item + ": the name <" + probe.name +
+                               "> must be letters, digits, '-' or '_' (it "
+                               "names the file line-NAME-level-K.csv)."));
+        for (const LineProbe &other : line_probes)
+          AssertThrow(other.name != probe.name,
+                      ExcMessage(where + ": the name <" + probe.name +
+                                 "> is given twice."));
+        probe.start =
+          ParameterParsing::parse_point(parts[1], context.dim, in_item);
+        probe.end =
+          ParameterParsing::parse_point(parts[2], context.dim, in_item);
+        const std::optional<double> n =
+          ParameterParsing::checked_number(parts[3], 2, true, 1e6, true);
+        AssertThrow(n && *n == std::floor(*n),
+                    ExcMessage(in_item + ": the number of points <" + parts[3] +
+                               "> must be an integer from 2 to 1e6."));
+        probe.n_points = static_cast<unsigned int>(*n);
+        line_probes.push_back(probe);
+      }
   }
 } // namespace PolyFrac

@@ -1027,6 +1027,17 @@ CASES = {
                + section("Gravity", Vector="0, -9.81")
                + section("Exact solution", Analytic_solution="terzaghi",
                          Analytic_load="1e6")}),
+    "line_probe_malformed": case(
+        "`Output/Line probes = top: 0, 0 : 1, 1` (no number of points)",
+        ["subsection <Output>, <Line probes>: <top: 0, 0 : 1, 1> is not "
+         "<NAME: x0, y0[, z0] : x1, y1[, z1] : N>"],
+        files={"scene.prm": section("Output", Line_probes="top: 0, 0 : 1, 1")}),
+    "line_probe_one_point": case(
+        "`Output/Line probes = top: 0, 0 : 1, 1 : 1`",
+        ["<top: 0, 0 : 1, 1 : 1>: the number of points <1> must be an "
+         "integer from 2 to 1e6"],
+        files={"scene.prm": section("Output",
+                                    Line_probes="top: 0, 0 : 1, 1 : 1")}),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
         ["<Lame mu> = 0: each value must be > 0, not <0>"],

@@ -1,7 +1,8 @@
 """Restart (issue 28): a fractured poromechanical scene stopped by SIGTERM in
 the middle and resumed with --resume ends with the same files as the run that
 was not stopped: the same names, the VTU, PVTU and PVD files byte for byte,
-the time series and convergence table equal but for their wall time column
+the time series, the line probe and the convergence table equal but for
+their last column (the wall time)
 (the direct solver: serial UMFPACK, MUMPS on ranks), and the same summary
 at its end (the fluid volumes of every step, the fractures). Then checkpoints that
 do not belong to the run are refused with their message: another scene (the
@@ -32,6 +33,10 @@ scene = [os.path.join(source, "prm", "nucleation-2d.prm" if nucleation else
                       "poromechanics-2d-slip.prm"),
          "--set", "Time/End time=" + end_time, "--set", "Time/Time step=0.5",
          "--set", "Output/Print timings=false"]
+# A line probe, whose file must come out the same too.
+scene += ["--set", "Output/Line probes=across: " +
+          ("-90, -5 : 90, 5 : 19" if nucleation else
+           "-0.9, -0.9 : 0.9, 0.9 : 19")]
 if nucleation:
     scene += ["--set", "Mesh/Local refinements=2"]
 # The lines of the summary at the end of the run: the fluid volumes of all

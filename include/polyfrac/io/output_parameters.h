@@ -2,12 +2,14 @@
 #define polyfrac_io_output_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <polyfrac/base/parameter_context.h>
 #include <polyfrac/base/selection.h>
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace PolyFrac
 {
@@ -33,6 +35,20 @@ namespace PolyFrac
       {"best", "fast", "none"}};
   };
 
+  /** One line of Output/Line probes: @p n_points points evenly spaced from
+   * @p start to @p end, written as line-NAME-level-K.csv. */
+  struct LineProbe
+  {
+    /** NAME: letters, digits, '-' and '_'. */
+    std::string name;
+    /** The first point (components beyond the dimension zero). */
+    Point<3> start;
+    /** The last point. */
+    Point<3> end;
+    /** The number of points, ≥ 2, both ends included. */
+    unsigned int n_points;
+  };
+
   /** The subsection Output: where and what the run writes. */
   struct OutputParameters
   {
@@ -46,6 +62,12 @@ namespace PolyFrac
     void
     parse_parameters(ParameterHandler &prm, const ParameterContext &context);
 
+    /** Reads Output/Line probes from @p text; throws naming the entry and
+     * the item on a malformed one, a name given twice or fewer than 2
+     * points. */
+    void
+    read_line_probes(const std::string &text, const ParameterContext &context);
+
     /** Output directory. */
     std::string directory;
     /** Write VTU: whether the solution files are written. */
@@ -57,6 +79,9 @@ namespace PolyFrac
     /** Checkpoint interval: a checkpoint after every this many steps
      * (0: only when stopped by a signal). */
     unsigned int checkpoint_interval;
+    /** Line probes: the lines along which every output time samples the
+     * fields constant over a cell (LineProbeSeries). */
+    std::vector<LineProbe> line_probes;
     /** Whether the run continues from its checkpoint (the command line's
      * --resume, not an entry). */
     bool resume = false;

@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Output/Line probes on prm/lithostatic-column-2d.prm (a 50 m x 200 m
+column of 2 x 20 cells at rest, a fracture along x = 25 from y = -180 to
+-20), two steps of 1e4 s:
+
+- vertical: x = 12.5, y from -197.5 to -2.5, 40 points (none on a cell
+  boundary): the pressure of every point is that of its cell, the
+  hydrostatic 1e5 + rho_f g (-y_K) at the cell's centre y_K, and the total
+  stress its cell's lithostatic one; no fracture field (the line misses
+  the fracture);
+- fracture: x = 25, y from -175 to -25, 16 points at the middles of the
+  fracture faces: the fracture pressure is hydrostatic there, and the
+  normal jump zero;
+- outside: two points beyond the mesh: every field is empty;
+- one block of rows per output time (t = 0, 1e4, 2e4), each with its time
+  and the arc length from the first point.
+
+usage: line_probes.py POLYFRAC SOURCE_DIR WORK_DIR
+Exits non-zero on the first failed check.
+"""
+import csv
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                os.pardir, "io"))
+from scene_summary import run_scene  # noqa: E402
+
+G, RHO_F = 9.81, 1000.0
+
+
+def fail(message):
+    sys.exit("line_probes: " + message)
+
+
+def hydrostatic(y):
+    return 1e5 - RHO_F * G * y
+
+
+def read(directory, name):
+    path = os.path.join(directory, "line-" + name + "-level-0.csv")
+    if not os.path.exists(path):
+        fail(f"no file {path}")
+    with open(path) as file:
+        rows = list(csv.DictReader(file))
+    times = sorted({float(row["time"]) for row in rows})
+    if times != [0.0, 1e4, 2e4]:
+        fail(f"{name}: times {times}, expected 0, 1e4, 2e4")
+    return rows, times
+
+
+def close(a, b, tolerance=1e-6):
+    return abs(a - b) <= tolerance * max(abs(a), abs(b), 1.0)
+
+
+program, source, work = sys.argv[1:4]
+directory, _ = run_scene(
+    program, source, work, "probes", "lithostatic-column-2d.prm",
+    "Output/Print timings=false", "Time/End time=2e4",
+    "Output/Line probes=vertical: 12.5, -197.5 : 12.5, -2.5 : 40; "
+    "fracture: 25, -175 : 25, -25 : 16; outside: 60, -10 : 70, -10 : 2")
+
+rows, times = read(directory, "vertical")
+if len(rows) != 3 * 40:
+    fail(f"vertical: {len(rows)} rows, expected 120")
+worst = 0.0
+for row in rows:
+    y = float(row["y"])
+    centre = -195.0 + 10.0 * math.floor((y + 200.0) / 10.0)
+    s = float(row["arc_length"])
+    if not close(s, y + 197.5):
+        fail(f"vertical: arc length {s} at y = {y}")
+    if row["fracture_pressure"] != "":
+        fail(f"vertical: a fracture value at y = {y}")
+    p = float(row["pressure"])
+    worst = max(worst, abs(p / hydrostatic(centre) - 1))
+    if not close(p, hydrostatic(centre)):
+        fail(f"vertical: pressure {p} at y = {y}, its cell's "
+             f"{hydrostatic(centre)}")
+    if not float(row["total_stress_yy"]) < -2e6:
+        fail(f"vertical: total stress {row['total_stress_yy']} at y = {y}")
+print(f"vertical: {len(rows)} rows at t = {times}; pressures its cells' to "
+      f"{worst:.2g}")
+
+rows, _ = read(directory, "fracture")
+worst = 0.0
+for row in rows:
+    y = float(row["y"])
+    p_f = float(row["fracture_pressure"])
+    worst = max(worst, abs(p_f / hydrostatic(y) - 1))
+    if not close(p_f, hydrostatic(y)):
+        fail(f"fracture: pressure {p_f} at y = {y}, hydrostatic "
+             f"{hydrostatic(y)}")
+    if not abs(float(row["normal_jump"])) < 1e-12:
+        fail(f"fracture: normal jump {row['normal_jump']} at y = {y}")
+print(f"fracture: {len(rows)} rows; fracture pressures hydrostatic to "
+      f"{worst:.2g}")
+
+rows, _ = read(directory, "outside")
+for row in rows:
+    filled = [key for key, value in row.items()
+              if key not in ("time", "arc_length", "x", "y") and value != ""]
+    if filled:
+        fail(f"outside: values at x = {row['x']}: {filled}")
+print(f"outside: {len(rows)} rows, every field empty")
