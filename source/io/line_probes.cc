@@ -77,29 +77,58 @@ namespace PolyFrac
       return sum <= 1 + 1e-10 && offset.norm() <= tolerance;
     }
 
-    /** Whether the patch @p patch holds the point @p x. */
-    template <int dim, int spacedim>
-    bool
-    holds(const DataOutBase::Patch<dim, spacedim> &patch,
-          const Point<spacedim>                   &x)
+    /** The corners of the simplices of a patch, its diameter and the
+     * bounding box of its vertices: computed once per patch. */
+    template <int spacedim>
+    struct PatchShape
     {
-      const unsigned int n        = patch.reference_cell.n_vertices();
-      double             diameter = 0;
+      std::vector<std::vector<Point<spacedim>>> simplices;
+      double                                    diameter = 0;
+      Point<spacedim>                           lower, upper;
+    };
+
+    /** The PatchShape of @p patch. */
+    template <int dim, int spacedim>
+    PatchShape<spacedim>
+    shape_of(const DataOutBase::Patch<dim, spacedim> &patch)
+    {
+      PatchShape<spacedim> shape;
+      const unsigned int   n = patch.reference_cell.n_vertices();
+      shape.lower = shape.upper = patch.vertices[0];
       for (unsigned int a = 0; a < n; ++a)
-        for (unsigned int b = a + 1; b < n; ++b)
-          diameter =
-            std::max(diameter, patch.vertices[a].distance(patch.vertices[b]));
-      for (unsigned int a = 0; a < n; ++a)
-        if (patch.vertices[a].distance(x) > diameter * (1 + 1e-8))
-          return false;
+        {
+          for (unsigned int d = 0; d < spacedim; ++d)
+            {
+              shape.lower[d] = std::min(shape.lower[d], patch.vertices[a][d]);
+              shape.upper[d] = std::max(shape.upper[d], patch.vertices[a][d]);
+            }
+          for (unsigned int b = a + 1; b < n; ++b)
+            shape.diameter =
+              std::max(shape.diameter,
+                       patch.vertices[a].distance(patch.vertices[b]));
+        }
       for (const std::vector<unsigned int> &simplex : simplices(dim, n))
         {
-          std::vector<Point<spacedim>> corners;
+          shape.simplices.emplace_back();
           for (const unsigned int v : simplex)
-            corners.push_back(patch.vertices[v]);
-          if (in_simplex(corners, x, 1e-8 * diameter))
-            return true;
+            shape.simplices.back().push_back(patch.vertices[v]);
         }
+      return shape;
+    }
+
+    /** Whether the patch of shape @p shape holds the point @p x. */
+    template <int spacedim>
+    bool
+    holds(const PatchShape<spacedim> &shape, const Point<spacedim> &x)
+    {
+      const double tolerance = 1e-8 * shape.diameter;
+      for (unsigned int d = 0; d < spacedim; ++d)
+        if (x[d] < shape.lower[d] - tolerance ||
+            x[d] > shape.upper[d] + tolerance)
+          return false;
+      for (const auto &corners : shape.simplices)
+        if (in_simplex(corners, x, tolerance))
+          return true;
       return false;
     }
   } // namespace
@@ -145,9 +174,12 @@ namespace PolyFrac
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
     std::vector<unsigned int> owner(points.size(), n_ranks);
     std::vector<double>       values(points.size() * components.size(), 0.);
+    std::vector<PatchShape<spacedim>> shapes;
+    for (const auto &patch : data.patches)
+      shapes.push_back(shape_of(patch));
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int p = 0; p < data.patches.size(); ++p)
-        if (holds(data.patches[p], points[i]))
+        if (holds(shapes[p], points[i]))
           {
             owner[i] = rank;
             for (unsigned int c = 0; c < components.size(); ++c)

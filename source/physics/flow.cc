@@ -242,10 +242,23 @@ namespace PolyFrac
   Flow<dim>::potential(const std::vector<types::global_dof_index> &local_dofs,
                        const Vector<double> &pressure) const
   {
-    Vector<double> q(local_dofs.size());
+    Vector<double> q = local_gravity_potential(local_dofs);
     for (unsigned int j = 0; j < local_dofs.size(); ++j)
-      q(j) = pressure(local_dofs[j]) - gravity_potential_at(local_dofs[j]);
+      q(j) = pressure(local_dofs[j]) - q(j);
     return q;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  Flow<dim>::local_gravity_potential(
+    const std::vector<types::global_dof_index> &local_dofs) const
+  {
+    Vector<double> gamma(local_dofs.size());
+    for (unsigned int j = 0; j < local_dofs.size(); ++j)
+      gamma(j) = gravity_potential_at(local_dofs[j]);
+    return gamma;
   }
 
 
@@ -260,10 +273,8 @@ namespace PolyFrac
   {
     if (gravity_potential.size() == 0)
       return;
-    Vector<double> gamma(local_dofs.size()), flux(local_dofs.size());
-    for (unsigned int j = 0; j < local_dofs.size(); ++j)
-      gamma(j) = gravity_potential(local_dofs[j]);
-    matrix.vmult(flux, gamma);
+    Vector<double> flux(local_dofs.size());
+    matrix.vmult(flux, local_gravity_potential(local_dofs));
     local_rhs.add(coefficient, flux);
   }
 
@@ -796,14 +807,14 @@ namespace PolyFrac
                               const Vector<double> &previous,
                               const Vector<double> &pressure) const
   {
-    const auto     local_dofs = cell_dofs(c);
+    const auto local_dofs = cell_dofs(c);
+    if (data.increment_mobility.empty())
+      return std::vector<double>(local_dofs.size() - 1, 0.);
     Vector<double> increment(local_dofs.size());
     for (unsigned int j = 0; j < local_dofs.size(); ++j)
       increment(j) = pressure(local_dofs[j]) - previous(local_dofs[j]);
     return outward_fluxes(cell_matrices[c],
-                          data.increment_mobility.empty() ?
-                            0. :
-                            data.increment_mobility[c],
+                          data.increment_mobility[c],
                           increment);
   }
 
@@ -885,10 +896,7 @@ namespace PolyFrac
       [this](const FullMatrix<double>                   &M,
              const double                                c,
              const std::vector<types::global_dof_index> &local_dofs) {
-        Vector<double> gamma(local_dofs.size());
-        for (unsigned int j = 0; j < local_dofs.size(); ++j)
-          gamma(j) = gravity_potential_at(local_dofs[j]);
-        return outward_fluxes(M, c, gamma);
+        return outward_fluxes(M, c, local_gravity_potential(local_dofs));
       };
     double residual = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)

@@ -427,6 +427,11 @@ namespace PolyFrac
     potential(const std::vector<types::global_dof_index> &local_dofs,
               const Vector<double>                       &pressure) const;
 
+    /** γ on the unknowns @p local_dofs (zeros without gravity). */
+    Vector<double>
+    local_gravity_potential(
+      const std::vector<types::global_dof_index> &local_dofs) const;
+
     /** Adds @p coefficient @p matrix γ on the unknowns @p local_dofs to
      * @p local_rhs: the flux that gravity drives (nothing without it). */
     void
