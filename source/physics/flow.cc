@@ -46,6 +46,21 @@ namespace PolyFrac
           fluxes[i - 1] -= c * M(i, j) * v(j);
       return fluxes;
     }
+
+    /** The sizes c Σ_j |M_ij| v_j, i ≥ 1, of the products whose sum is the
+     * outward flux −c (M v)_i (outward_fluxes()) for nonnegative @p v: a
+     * bound of the flux's round-off over the machine epsilon. */
+    std::vector<double>
+    flux_magnitudes(const FullMatrix<double> &M,
+                    const double              c,
+                    const Vector<double>     &v)
+    {
+      std::vector<double> magnitudes(v.size() - 1, 0.);
+      for (unsigned int i = 1; i < v.size(); ++i)
+        for (unsigned int j = 0; j < v.size(); ++j)
+          magnitudes[i - 1] += c * std::abs(M(i, j)) * v(j);
+      return magnitudes;
+    }
   } // namespace
 
 
@@ -876,27 +891,34 @@ namespace PolyFrac
     const auto &mesh = geometry.mesh;
     matrix_source->set_time(data.time);
     fracture_source->set_time(data.time);
-    // The residual of one balance relative to its largest term, among
-    // which the fluxes that gravity drives, @p gravity: the fluxes of p − γ
-    // are differences of those of p and γ, and carry their round-off.
+    // The residual of one balance relative to its largest term or to the
+    // largest size of the products that make up a flux, @p magnitudes: a
+    // flux is a sum of products of pressures (and gravity potentials γ) with
+    // HFV coefficients that cancel where the pressure varies little, so that
+    // its round-off follows their size, not its own (a dead-end fracture
+    // weakly tied to the matrix has fluxes of 1e-11 and round-off of 1e-15).
     const auto relative = [](const std::vector<double> &terms,
-                             const std::vector<double> &gravity) {
+                             const std::vector<double> &magnitudes) {
       double sum = 0, largest = 0;
       for (const double t : terms)
         {
           sum += t;
           largest = std::max(largest, std::abs(t));
         }
-      for (const double t : gravity)
-        largest = std::max(largest, std::abs(t));
+      for (const double t : magnitudes)
+        largest = std::max(largest, t);
       return largest > 0 ? std::abs(sum) / largest : 0.;
     };
-    // The fluxes −c (M γ)_i of an HFV matrix @p M on @p local_dofs.
-    const auto gravity_fluxes =
-      [this](const FullMatrix<double>                   &M,
-             const double                                c,
-             const std::vector<types::global_dof_index> &local_dofs) {
-        return outward_fluxes(M, c, local_gravity_potential(local_dofs));
+    // The sizes c Σ_j |M_ij| (|p_j| + |γ_j|) of the products of the fluxes
+    // of an HFV matrix @p M on @p local_dofs.
+    const auto product_sizes =
+      [&](const FullMatrix<double>                   &M,
+          const double                                c,
+          const std::vector<types::global_dof_index> &local_dofs) {
+        Vector<double> sizes = local_gravity_potential(local_dofs);
+        for (unsigned int j = 0; j < local_dofs.size(); ++j)
+          sizes(j) = std::abs(pressure(local_dofs[j])) + std::abs(sizes(j));
+        return flux_magnitudes(M, c, sizes);
       };
     double residual = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
@@ -914,9 +936,9 @@ namespace PolyFrac
                            data.cell_rhs[c]));
           residual = std::max(residual,
                               relative(terms,
-                                       gravity_fluxes(cell_matrices[c],
-                                                      cell_mobility[c],
-                                                      cell_dofs(c))));
+                                       product_sizes(cell_matrices[c],
+                                                     cell_mobility[c],
+                                                     cell_dofs(c))));
         }
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
@@ -937,9 +959,9 @@ namespace PolyFrac
         residual = std::max(
           residual,
           relative(terms,
-                   gravity_fluxes(fracture_matrices[i],
-                                  fracture_conductivity(i, data.apertures[i]),
-                                  fracture_dofs(i))));
+                   product_sizes(fracture_matrices[i],
+                                 fracture_conductivity(i, data.apertures[i]),
+                                 fracture_dofs(i))));
       }
     return residual;
   }

@@ -179,7 +179,9 @@ namespace PolyFrac
                Vector<double>       &pressure) const;
 
     /** The largest mass balance residual of the cell and fracture face
-     * equations, relative to the largest term of its equation. */
+     * equations, each relative to the largest of its terms and of the sizes
+     * c Σ_j |M_ij| (|p_j| + |γ_j|) of the products that make its fluxes
+     * (their round-off scale). */
     double
     mass_balance_residual(const FlowStepData   &data,
                           const Vector<double> &previous,
