@@ -33,7 +33,18 @@ namespace PolyFrac
                     dofs,
                     flow)
     , pressure(flow.initial_pressure())
+    , transport(
+        prm.transport.enabled ?
+          std::make_unique<const Transport<dim>>(prm.transport,
+                                                 prm,
+                                                 *discretization.geometry,
+                                                 *discretization.network,
+                                                 edges,
+                                                 flow) :
+          nullptr)
   {
+    if (transport)
+      concentration = transport->initial_concentration();
     if (discretization.dofs->is_distributed())
       dofs.distribute_among_ranks(*discretization.dofs,
                                   *discretization.mesh,
@@ -53,7 +64,7 @@ namespace PolyFrac
   FlowModel<dim>::save_state(std::ostream &out) const
   {
     boost::archive::binary_oarchive archive(out);
-    archive << pressure << run_volumes << time;
+    archive << pressure << run_volumes << time << concentration << run_tracer;
   }
 
 
@@ -63,7 +74,7 @@ namespace PolyFrac
   FlowModel<dim>::load_state(std::istream &in)
   {
     boost::archive::binary_iarchive archive(in);
-    archive >> pressure >> run_volumes >> time;
+    archive >> pressure >> run_volumes >> time >> concentration >> run_tracer;
   }
 
 
@@ -108,6 +119,8 @@ namespace PolyFrac
         return report;
       }
     run_volumes += fluid_balance.step(data, previous, pressure, {}, {}, {});
+    if (transport)
+      run_tracer += transport->step(data, pressure, concentration);
     time                 = t_new;
     const auto &network  = *discretization.network;
     const auto &geometry = *discretization.geometry;
@@ -138,6 +151,15 @@ namespace PolyFrac
   {
     print_fluid_summary(
       out, run_volumes, time, dim, flow.injection_pressure(time, pressure));
+    if (transport)
+      {
+        const auto precision = out.precision(6);
+        out << "Tracer amounts from t = 0 to " << time
+            << " (concentration times volume): ";
+        run_tracer.print(out);
+        out << std::endl;
+        out.precision(precision);
+      }
   }
 
 
@@ -163,9 +185,12 @@ namespace PolyFrac
   PatchData<dim, dim>
   FlowModel<dim>::matrix_output() const
   {
-    const std::vector<OutputField> fields = {
+    std::vector<OutputField> fields = {
       {"pressure", flow.cell_pressures(pressure)},
       vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))};
+    if (transport)
+      fields.push_back(
+        {"concentration", transport->cell_concentrations(concentration)});
     return matrix_patches<dim>(*discretization.geometry,
                                *discretization.network,
                                *discretization.dofs,
@@ -180,12 +205,15 @@ namespace PolyFrac
   PatchData<dim - 1, dim>
   FlowModel<dim>::fracture_output() const
   {
-    const std::vector<double> apertures   = flow.flow_step_data(0, 1).apertures;
-    const std::vector<OutputField> fields = {
-      {"fracture_pressure", flow.fracture_pressures(pressure)},
-      vector_field<dim>("fracture_flux",
+    const std::vector<double> apertures = flow.flow_step_data(0, 1).apertures;
+    std::vector<OutputField>  fields    = {
+          {"fracture_pressure", flow.fracture_pressures(pressure)},
+          vector_field<dim>("fracture_flux",
                         flow.fracture_velocities(apertures, pressure)),
-      {"aperture", apertures}};
+          {"aperture", apertures}};
+    if (transport)
+      fields.push_back({"fracture_concentration",
+                        transport->fracture_concentrations(concentration)});
     return fracture_patches<dim>(*discretization.geometry,
                                  *discretization.network,
                                  *discretization.dofs,
@@ -228,7 +256,17 @@ namespace PolyFrac
       "flow",
       "matrix and fracture flow (subsection Flow) with the aperture d_0, by "
       "implicit Euler steps (subsection Time).",
-      flow_entries,
+      [] {
+        std::vector<std::string> entries = flow_entries();
+        for (const std::string entry : {"Transport/Enabled",
+                                        "Transport/Porosity",
+                                        "Transport/Fracture porosity",
+                                        "Transport/Initial concentration",
+                                        "Transport/Inflow concentration",
+                                        "Transport/Source concentration"})
+          entries.push_back(entry);
+        return entries;
+      },
       [](const Parameters &) { return true; },
       false);
   } // namespace

@@ -279,6 +279,7 @@ namespace PolyFrac
     ConvergenceStudyParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     FlowParameters::declare_parameters(prm);
+    TransportParameters::declare_parameters(prm);
     NonlinearSolverParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
@@ -436,6 +437,8 @@ namespace PolyFrac
     contact.parse_parameters(*prm, *this);
     flow.parse_parameters(*prm, *this);
     flow.check_fracture_count(fractures.n_fractures(), *this);
+    transport.parse_parameters(*prm, *this);
+    transport.check_fracture_count(fractures.n_fractures(), *this);
     set_pore_fluid_at_rest();
     nonlinear.parse_parameters(*prm, *this);
     solver.parse_parameters(*prm, *this);
@@ -473,6 +476,11 @@ namespace PolyFrac
                            "Model = " +
                            with_indicators + " have so far; Model = " + model +
                            " needs <Refinement = uniform>."));
+    AssertThrow(!transport.enabled || uses("Transport/Enabled"),
+                ExcMessage(where("Transport") +
+                           ": <Enabled = true> with Model = " + model +
+                           ": only Model = flow carries the passive tracer "
+                           "so far. Set Enabled = false, or Model = flow."));
     AssertThrow(mesh.fracture_refinements == 0 || fractures.any(),
                 ExcMessage(where("Mesh") + ": <Fracture refinements> = " +
                            std::to_string(mesh.fracture_refinements) +

@@ -208,6 +208,25 @@ namespace PolyFrac
 
 
 
+    void
+    check_fracture_count(const std::vector<double> &values,
+                         const unsigned int         n_fractures,
+                         const std::string         &where,
+                         const std::string         &entry)
+    {
+      AssertThrow(values.size() == 1 || values.size() == n_fractures,
+                  ExcMessage(where + ": <" + entry + "> lists " +
+                             std::to_string(values.size()) +
+                             " values, but the scene has " +
+                             std::to_string(n_fractures) +
+                             " fractures: give one value for every fracture, "
+                             "or one per fracture (in the order of "
+                             "Fractures/Segments, Polygons or Gmsh physical "
+                             "tags)."));
+    }
+
+
+
     std::vector<double>
     per_fracture_doubles(ParameterHandler  &prm,
                          const std::string &where,

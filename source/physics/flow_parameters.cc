@@ -259,15 +259,10 @@ namespace PolyFrac
             "Fracture aperture at contact", aperture_at_contact),
           {"Fracture normal transmissibility", normal_transmissibility},
           {"Fracture permeability", fracture_permeability}})
-      AssertThrow(values.size() == 1 || values.size() == n_fractures,
-                  ExcMessage(context.where("Flow") + ": <" + entry +
-                             "> lists " + std::to_string(values.size()) +
-                             " values, but the scene has " +
-                             std::to_string(n_fractures) +
-                             " fractures: give one value for every fracture, "
-                             "or one per fracture (in the order of "
-                             "Fractures/Segments, Polygons or Gmsh physical "
-                             "tags)."));
+      ParameterParsing::check_fracture_count(values,
+                                             n_fractures,
+                                             context.where("Flow"),
+                                             entry);
   }
 
 

@@ -1038,6 +1038,41 @@ CASES = {
          "integer from 2 to 1e6"],
         files={"scene.prm": section("Output",
                                     Line_probes="top: 0, 0 : 1, 1 : 1")}),
+    "tracer_porosity_zero": case(
+        "`Transport/Porosity = 0` with the tracer on",
+        ["subsection <Transport>", "<Porosity>", "in (0, 1]"],
+        files={"scene.prm": FLOW + section("Transport", Enabled="true",
+                                           Porosity="0")}),
+    "tracer_fracture_porosity_above_one": case(
+        "`Transport/Fracture porosity = 1.5`",
+        ["subsection <Transport>: <Fracture porosity> = 1.5: each value must "
+         "be in (0, 1]"],
+        files={"scene.prm": FLOW + SEGMENT + section(
+            "Transport", Enabled="true", Fracture_porosity="1.5")}),
+    "tracer_fracture_porosity_count": case(
+        "`Transport/Fracture porosity = 0.5, 0.5` for one fracture",
+        ["<Fracture porosity> lists 2 values, but the scene has 1 fractures"],
+        files={"scene.prm": FLOW + SEGMENT + section(
+            "Transport", Enabled="true", Fracture_porosity="0.5, 0.5")}),
+    "tracer_with_poromechanics": case(
+        "`Transport/Enabled = true` with `Model = poromechanics`",
+        ["subsection <Transport>: <Enabled = true> with Model = "
+         "poromechanics: only Model = flow carries the passive tracer"],
+        files={"scene.prm": section("Model", Model="poromechanics")
+               + section("Transport", Enabled="true")}),
+    "tracer_inflow_not_an_expression": case(
+        "`Transport/Inflow concentration = 1 +`",
+        ["Transport/Inflow concentration"],
+        files={"scene.prm": FLOW + section("Transport", Enabled="true",
+                                           Inflow_concentration="1 +")}),
+    "tracer_porosity_missing_region": case(
+        "`Transport/Porosity = 0: 0.2` on a mesh of regions 0 and 1",
+        ["subsection <Transport>: <Porosity> gives regions 0, but cells of "
+         "region 1 have no value"],
+        files={"scene.prm": FLOW + section(
+            "Mesh", Region_boxes="-1, -1 : 0, 1", Region_box_ids="1")
+            + section("Transport", Enabled="true", Porosity="0: 0.2")},
+        stage="level"),
     "lame_mu_zero": case(
         "`Lame mu = 0`",
         ["<Lame mu> = 0: each value must be > 0, not <0>"],

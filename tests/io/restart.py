@@ -11,11 +11,15 @@ entry named), another version, a file cut short, no file at all.
 With SCENE = nucleation, the same for contact mechanics in quasi-static
 time steps (prm/nucleation-2d.prm on 3.1 m faces, slip weakening): the
 resumed run carries the slip history and ends at the same quasi-static
-instability, with the same files.
+instability, with the same files. With SCENE = tracer, the same for
+Model = flow with the passive tracer (prm/benchmarks/flemisch-case-2.prm on
+64 x 64 cells, Transport/Enabled, fluid of concentration 1 flowing in at
+0.04 m/s, so that the front is 0.6 m across at t = 15 s): the
+resumed run carries the concentrations and the tracer's amounts.
 
 usage: restart.py POLYFRAC SOURCE_DIR WORK_DIR N_RANKS END_TIME [SCENE]
 (End time of the scene, steps of 0.5 s; the run is stopped after 3 steps;
-SCENE: slip, the default, or nucleation)
+SCENE: slip, the default, nucleation or tracer)
 Exits non-zero, saying why, if any of this fails."""
 
 import os
@@ -28,22 +32,35 @@ import time
 
 program, source, work = sys.argv[1:4]
 n_ranks, end_time = int(sys.argv[4]), sys.argv[5]
-nucleation = len(sys.argv) > 6 and sys.argv[6] == "nucleation"
-scene = [os.path.join(source, "prm", "nucleation-2d.prm" if nucleation else
-                      "poromechanics-2d-slip.prm"),
+kind = sys.argv[6] if len(sys.argv) > 6 else "slip"
+nucleation = kind == "nucleation"
+scene = [os.path.join(source, "prm", {
+    "slip": "poromechanics-2d-slip.prm",
+    "nucleation": "nucleation-2d.prm",
+    "tracer": os.path.join("benchmarks", "flemisch-case-2.prm")}[kind]),
          "--set", "Time/End time=" + end_time, "--set", "Time/Time step=0.5",
          "--set", "Output/Print timings=false"]
 # A line probe, whose file must come out the same too.
-scene += ["--set", "Output/Line probes=across: " +
-          ("-90, -5 : 90, 5 : 19" if nucleation else
-           "-0.9, -0.9 : 0.9, 0.9 : 19")]
+scene += ["--set", "Output/Line probes=across: " + {
+    "slip": "-0.9, -0.9 : 0.9, 0.9 : 19",
+    "nucleation": "-90, -5 : 90, 5 : 19",
+    "tracer": "0.05, 0.05 : 0.95, 0.95 : 19"}[kind]]
 if nucleation:
     scene += ["--set", "Mesh/Local refinements=2"]
+if kind == "tracer":
+    scene += ["--set", "Mesh/Subdivisions=64, 64",
+              "--set", "Transport/Enabled=true",
+              "--set", "Transport/Inflow concentration=1",
+              "--set", "Transport/Porosity=1",
+              # A slow inflow: the front is in the middle at the end.
+              "--set", "Flow/Flux boundary expression=-0.04"]
 # The lines of the summary at the end of the run: the fluid volumes of all
-# the steps (those before the checkpoint too) and the fractures, or the
-# instability that ends the nucleation.
-summary_lines = ("Quasi-static instability",) if nucleation else (
-    "Fluid volumes", "Injection pressure", "Fractures at t")
+# the steps (those before the checkpoint too) and the fractures, the
+# instability that ends the nucleation, or the tracer's amounts.
+summary_lines = {
+    "slip": ("Fluid volumes", "Injection pressure", "Fractures at t"),
+    "nucleation": ("Quasi-static instability",),
+    "tracer": ("Fluid volumes", "Tracer amounts")}[kind]
 if n_ranks > 1:
     # Not yet on several ranks: the normal face bubbles. The direct solver
     # (the monolithic Newton, every rank factorising the whole Jacobian):
@@ -71,12 +88,14 @@ def run(directory, *extra):
                           text=True, env=environment)
 
 
-def n_rows(directory):
+def last_step(directory):
+    """The number of the last step in the time series (0 if none)."""
     try:
         with open(os.path.join(directory, "time_series-level-0.csv")) as f:
-            return sum(1 for _ in f) - 1
+            rows = f.read().splitlines()[1:]
     except FileNotFoundError:
         return 0
+    return int(rows[-1].split(",")[0]) if rows else 0
 
 
 shutil.rmtree(work, ignore_errors=True)
@@ -97,13 +116,13 @@ def run_summary(stdout):
 whole_summary = run_summary(result.stdout)
 if len(whole_summary) != len(summary_lines):
     fail("the whole run prints no summary at its end:\n" + result.stdout)
-steps = n_rows(whole) - 1
+steps = last_step(whole)
 
 # The run stopped by SIGTERM once it has taken 3 steps.
 process = subprocess.Popen(command(stopped), stdout=subprocess.PIPE,
                            stderr=subprocess.PIPE, text=True,
                            env=environment)
-while n_rows(stopped) < 4 and process.poll() is None:
+while last_step(stopped) < 3 and process.poll() is None:
     time.sleep(0.02)
 if n_ranks == 1:
     process.send_signal(signal.SIGTERM)
@@ -118,7 +137,7 @@ if process.returncode != 128 + signal.SIGTERM:
 if "Stopped by SIGTERM after step" not in stderr or "--resume" not in stderr:
     fail("the stopped run does not say where it stopped and how to go on:\n"
          + stderr)
-taken = n_rows(stopped) - 1
+taken = last_step(stopped)
 if nucleation:
     # The checkpoint must carry a slip history: faces slip at its step.
     with open(os.path.join(stopped, "time_series-level-0.csv")) as f:

@@ -46,21 +46,30 @@ def run_scene(program, source, work, name, scene, *settings):
     return directory, result.stdout
 
 
-def fluid_volumes(name, output):
-    """The volumes of the line 'Fluid volumes ...' as a dict, after checking
-    that they are not all zero, add up as printed and balance: the imbalance
-    is at most 1e-9 of the largest volume. Exits naming NAME otherwise."""
-    match = re.search(r"Fluid volumes from t = 0 to .*: injected " + NUMBER +
+def balance(name, output, label):
+    """The amounts of the line 'LABEL from t = 0 to ...' that a run prints
+    at its end (FluidVolumes: injected, extracted, outflow, stored, matrix,
+    fractures, imbalance) as a dict; exits naming NAME if there is none."""
+    match = re.search(label + r" from t = 0 to .*: injected " + NUMBER +
                       r", extracted " + NUMBER +
                       r", out through the boundary " + NUMBER +
                       r", stored " + NUMBER + r" \(matrix " + NUMBER +
                       r", fractures " + NUMBER + r"\); imbalance " + NUMBER,
                       output)
     if not match:
-        sys.exit(f"{name}: no line 'Fluid volumes ...' at the end")
+        sys.exit(f"{name}: no line '{label} ...' at the end")
     keys = ("injected", "extracted", "outflow", "stored", "matrix",
             "fractures", "imbalance")
-    v = dict(zip(keys, map(float, match.groups())))
+    return dict(zip(keys, map(float, match.groups())))
+
+
+def fluid_volumes(name, output):
+    """The volumes of the line 'Fluid volumes ...' as a dict, after checking
+    that they are not all zero, add up as printed and balance: the imbalance
+    is at most 1e-9 of the largest volume. Exits naming NAME otherwise."""
+    keys = ("injected", "extracted", "outflow", "stored", "matrix",
+            "fractures", "imbalance")
+    v = balance(name, output, "Fluid volumes")
     largest = max(abs(v[k]) for k in keys[:3] + keys[4:6])
     if largest == 0:
         sys.exit(f"{name}: every volume is zero: the balance tests nothing")

@@ -10,6 +10,7 @@
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
 #include <polyfrac/physics/flow.h>
+#include <polyfrac/physics/transport.h>
 #include <polyfrac/postprocessing/fluid_volumes.h>
 
 namespace PolyFrac
@@ -23,7 +24,9 @@ namespace PolyFrac
    * at each step), no fracture storage (a_σ = 0: a scene without mechanics
    * has a fixed aperture) and the aperture Flow/Fracture aperture at
    * contact d_0 on every fracture face (Flow::flow_step_data()). Its state is
-   * the pressure vector of PressureDoFMap.
+   * the pressure vector of PressureDoFMap and, with Transport/Enabled, the
+   * concentrations of the passive tracer (Transport), carried by the fluxes
+   * of each step once its flow is solved.
    */
   template <int dim>
   class FlowModel : public Model<dim>
@@ -40,20 +43,20 @@ namespace PolyFrac
       return true;
     }
 
-    /** One implicit Euler step; prints the CG iterations (AMG) and the mass
-     * balance residual. */
+    /** One implicit Euler step of the flow, then of the tracer; prints the
+     * CG iterations (AMG) and the mass balance residual. */
     StepReport
     step(const double t_old, const double t_new, std::ostream &out) override;
 
-    /** The pressures. */
+    /** The pressures (and the concentrations). */
     void
     save_state(std::ostream &out) const override;
 
     void
     load_state(std::istream &in) override;
 
-    /** The fluid volumes of the run (FluidVolumes) and the injection
-     * pressure at its end. */
+    /** The fluid volumes of the run (FluidVolumes), the injection pressure
+     * at its end and the tracer's amounts. */
     void
     print_run_summary(std::ostream &out) const override;
 
@@ -66,12 +69,14 @@ namespace PolyFrac
     Errors
     errors(const double t) const override;
 
-    /** `pressure` (p_K), `darcy_velocity_x`, `_y` (, `_z`) per polytope. */
+    /** `pressure` (p_K), `darcy_velocity_x`, `_y` (, `_z`) per polytope;
+     * `concentration` with the tracer. */
     PatchData<dim, dim>
     matrix_output() const override;
 
     /** `fracture_pressure`, `fracture_flux_x`, ... (flux per width),
-     * `aperture` per fracture face. */
+     * `aperture` per fracture face; `fracture_concentration` with the
+     * tracer. */
     PatchData<dim - 1, dim>
     fracture_output() const override;
 
@@ -99,6 +104,11 @@ namespace PolyFrac
     /** The fluid volumes of the steps so far, and the time of the last. */
     FluidVolumes run_volumes;
     double       time = 0;
+    /** The passive tracer (Transport/Enabled), or none. */
+    const std::unique_ptr<const Transport<dim>> transport;
+    /** Its concentrations at the last time reached, and its amounts. */
+    Vector<double> concentration;
+    FluidVolumes   run_tracer;
   };
 
 

@@ -15,6 +15,7 @@
 #include <polyfrac/mesh/mesh_parameters.h>
 #include <polyfrac/physics/flow_parameters.h>
 #include <polyfrac/physics/mechanics_parameters.h>
+#include <polyfrac/physics/transport_parameters.h>
 #include <polyfrac/postprocessing/exact_solution_parameters.h>
 
 #include <array>
@@ -152,6 +153,8 @@ namespace PolyFrac
     ContactParameters contact;
     /** The subsection Flow. */
     FlowParameters flow;
+    /** subsection Transport. */
+    TransportParameters transport;
     /** The subsection Nonlinear solver. */
     NonlinearSolverParameters nonlinear;
     /** The subsection Linear solver. */

@@ -211,7 +211,7 @@ namespace PolyFrac
      * by bounded_double(); an item that reads @p keyword (if not empty)
      * gives 0. Throws naming @p where and the entry otherwise. The length
      * is checked against the fractures by the caller, who knows them
-     * (FlowParameters::check_fracture_count()).
+     * (check_fracture_count()).
      */
     std::vector<double>
     per_fracture_doubles(ParameterHandler  &prm,
@@ -221,6 +221,15 @@ namespace PolyFrac
                          const bool         lower_included,
                          const std::string &range,
                          const std::string &keyword = "");
+
+    /** Throws, naming @p where (the file and subsection) and @p entry,
+     * unless the list @p values that per_fracture_doubles() read has one
+     * value or @p n_fractures. */
+    void
+    check_fracture_count(const std::vector<double> &values,
+                         const unsigned int         n_fractures,
+                         const std::string         &where,
+                         const std::string         &entry);
 
     /** The value for fracture @p fracture of a list that
      * per_fracture_doubles() read: its one value, or the fracture's. */
