@@ -30,24 +30,26 @@ namespace PolyFrac
   /**
    * The output files of one level: the matrix and fracture VTU series over
    * its steps (`solution-level-K`, `fractures-level-K`), the line probes
-   * (`line-NAME-level-K.csv`) and, for a time-dependent model,
-   * `time_series-level-K.csv`, one row per step.
+   * (`line-NAME-level-K.csv`), the region integrals (`regions-level-K.csv`)
+   * and, for a time-dependent model, `time_series-level-K.csv`, one row per
+   * step.
    */
   template <int dim>
   class Simulator<dim>::LevelOutput
   {
   public:
-    /** The files of @p level of the scene of @p prm; @p with_fractures: the
-     * mesh has fracture faces; @p time_series: the model is time-dependent
-     * (its csv is written by rank 0 of @p communicator). */
-    LevelOutput(const Parameters  &prm,
-                const unsigned int level,
-                const bool         with_fractures,
-                const bool         time_series,
-                const MPI_Comm     communicator);
+    /** The files of @p level, discretised by @p discretization, of the
+     * scene of @p prm; @p time_series: the model is time-dependent (its csv
+     * is written by rank 0 of @p communicator). */
+    LevelOutput(const Parameters               &prm,
+                const unsigned int              level,
+                const LevelDiscretization<dim> &discretization,
+                const bool                      time_series,
+                const MPI_Comm                  communicator);
 
     /** Writes the state of @p model at time @p t as the next VTU step (if
-     * Output/Write VTU) and samples it along the line probes. */
+     * Output/Write VTU), samples it along the line probes and integrates it
+     * over the regions (Output/Region integrals). */
     void
     write_state(const Model<dim> &model, const double t);
 
@@ -84,6 +86,8 @@ namespace PolyFrac
     std::optional<VtuSeries> solution, fractures;
     /** One per Output/Line probes line. */
     std::vector<std::unique_ptr<LineProbeSeries<dim>>> probes;
+    /** Output/Region integrals, or none. */
+    std::unique_ptr<RegionIntegralSeries<dim>> region_integrals;
     /** Whether the mesh has fracture faces. */
     const bool                   with_fractures;
     std::string                  time_series_name;
@@ -266,18 +270,31 @@ namespace PolyFrac
 
 
   template <int dim>
-  Simulator<dim>::LevelOutput::LevelOutput(const Parameters  &prm,
-                                           const unsigned int level,
-                                           const bool         with_fractures,
-                                           const bool         time_series,
-                                           const MPI_Comm     communicator)
+  Simulator<dim>::LevelOutput::LevelOutput(
+    const Parameters               &prm,
+    const unsigned int              level,
+    const LevelDiscretization<dim> &discretization,
+    const bool                      time_series,
+    const MPI_Comm                  communicator)
     : prm(prm)
-    , with_fractures(with_fractures)
+    , with_fractures(discretization.network->n_fracture_faces() > 0)
   {
     const std::string level_name = "-level-" + std::to_string(level);
     for (const LineProbe &probe : prm.output.line_probes)
       probes.push_back(std::make_unique<LineProbeSeries<dim>>(
         probe, prm.output.directory, level, communicator));
+    if (prm.output.region_integrals)
+      {
+        std::vector<types::material_id> regions;
+        for (const auto &cell : discretization.mesh->cells)
+          regions.push_back(cell.region);
+        region_integrals = std::make_unique<RegionIntegralSeries<dim>>(
+          prm.output.directory,
+          level,
+          regions,
+          discretization.network->n_fractures(),
+          communicator);
+      }
     const auto compression = compression_level(prm.output.vtu_compression);
     if (prm.output.write_vtu)
       {
@@ -330,7 +347,9 @@ namespace PolyFrac
         archive << **series;
     archive << time_series_text;
     for (const auto &probe : probes)
-      archive << probe->text();
+      archive << probe->csv.text();
+    if (region_integrals)
+      archive << region_integrals->csv.text();
   }
 
 
@@ -355,7 +374,12 @@ namespace PolyFrac
     for (const auto &probe : probes)
       {
         archive >> text;
-        probe->restore(text);
+        probe->csv.restore(text);
+      }
+    if (region_integrals)
+      {
+        archive >> text;
+        region_integrals->csv.restore(text);
       }
   }
 
@@ -366,7 +390,7 @@ namespace PolyFrac
   Simulator<dim>::LevelOutput::write_state(const Model<dim> &model,
                                            const double      t)
   {
-    if (!solution && probes.empty())
+    if (!solution && probes.empty() && !region_integrals)
       return;
     const PatchData<dim, dim>                    matrix = model.matrix_output();
     const std::optional<PatchData<dim - 1, dim>> fracture_faces =
@@ -377,6 +401,10 @@ namespace PolyFrac
       fractures->write(*fracture_faces, t);
     for (const auto &probe : probes)
       probe->write(matrix, fracture_faces ? &*fracture_faces : nullptr, t);
+    if (region_integrals)
+      region_integrals->write(matrix,
+                              fracture_faces ? &*fracture_faces : nullptr,
+                              t);
   }
 
 
@@ -455,7 +483,9 @@ namespace PolyFrac
     if (time_series)
       names.push_back(time_series_name);
     for (const auto &probe : probes)
-      names.push_back(probe->name());
+      names.push_back(probe->csv.name());
+    if (region_integrals)
+      names.push_back(region_integrals->csv.name());
     return names;
   }
 
@@ -687,7 +717,7 @@ namespace PolyFrac
 
     LevelOutput                       output(level_prm,
                        level,
-                       discretization.network->n_fracture_faces() > 0,
+                       discretization,
                        model->is_time_dependent(),
                        communicator);
     const std::optional<unsigned int> newton_iterations =

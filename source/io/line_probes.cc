@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -131,6 +132,115 @@ namespace PolyFrac
           return true;
       return false;
     }
+
+    /** The columns of the cell arrays of @p data (a scalar's name, a
+     * vector's first spacedim components name_x, ..., a tensor's spacedim ×
+     * spacedim of its 3 × 3, name_xx, ...) into @p columns, and for each
+     * its (array, component). */
+    template <int dim, int spacedim>
+    std::vector<std::pair<unsigned int, unsigned int>>
+    cell_data_components(const PatchData<dim, spacedim> &data,
+                         std::vector<std::string>       &columns)
+    {
+      const std::string                                  axes = "xyz";
+      std::vector<std::pair<unsigned int, unsigned int>> components;
+      columns.clear();
+      for (unsigned int a = 0; a < data.cell_arrays.size(); ++a)
+        {
+          const auto &array = data.cell_arrays[a];
+          if (array.n_components == 1)
+            {
+              columns.push_back(array.name);
+              components.emplace_back(a, 0);
+            }
+          else if (array.n_components == 3)
+            for (unsigned int d = 0; d < spacedim; ++d)
+              {
+                columns.push_back(array.name + "_" + axes[d]);
+                components.emplace_back(a, d);
+              }
+          else
+            for (unsigned int i = 0; i < spacedim; ++i)
+              for (unsigned int j = 0; j < spacedim; ++j)
+                {
+                  columns.push_back(array.name + "_" + axes[i] + axes[j]);
+                  components.emplace_back(a, 3 * i + j);
+                }
+        }
+      return components;
+    }
+
+    /** The measure of the patch of shape @p shape: the sum over its
+     * simplices of sqrt(det(Eᵀ E))/k!, E the k edges from the first
+     * corner. */
+    template <int spacedim>
+    double
+    measure(const PatchShape<spacedim> &shape)
+    {
+      double sum = 0;
+      for (const auto &c : shape.simplices)
+        {
+          const unsigned int k = c.size() - 1;
+          FullMatrix<double> gram(k, k);
+          double             factorial = 1;
+          for (unsigned int i = 0; i < k; ++i)
+            {
+              factorial *= i + 1;
+              for (unsigned int j = 0; j < k; ++j)
+                gram(i, j) = (c[i + 1] - c[0]) * (c[j + 1] - c[0]);
+            }
+          sum += std::sqrt(std::max(gram.determinant(), 0.)) / factorial;
+        }
+      return sum;
+    }
+
+    /**
+     * The measure and the integrals of the cell data of @p data over each
+     * group of patches: a patch belongs to group @p group_of(g), g its
+     * value of the point data @p name (the polytope or the fracture), one
+     * of @p n_groups; the columns into @p columns. Summed over the ranks
+     * of @p communicator: row i holds group i's measure, then its
+     * integrals.
+     */
+    template <int dim, int spacedim>
+    std::vector<std::vector<double>>
+    group_integrals(const PatchData<dim, spacedim>                  &data,
+                    const std::string                               &name,
+                    const std::function<unsigned int(unsigned int)> &group_of,
+                    const unsigned int                               n_groups,
+                    std::vector<std::string>                        &columns,
+                    const MPI_Comm communicator)
+    {
+      const auto         components = cell_data_components(data, columns);
+      const unsigned int row =
+        std::find(data.names.begin(), data.names.end(), name) -
+        data.names.begin();
+      AssertThrow(row < data.names.size(), ExcInternalError());
+      const unsigned int  width = 1 + components.size();
+      std::vector<double> sums(n_groups * width, 0.);
+      for (unsigned int p = 0; p < data.patches.size(); ++p)
+        {
+          const unsigned int group = group_of(static_cast<unsigned int>(
+            std::round(data.patches[p].data(row, 0))));
+          const double       size  = measure(shape_of(data.patches[p]));
+          sums[group * width] += size;
+          for (unsigned int c = 0; c < components.size(); ++c)
+            {
+              const auto &array = data.cell_arrays[components[c].first];
+              sums[group * width + 1 + c] +=
+                size *
+                array.values[p * array.n_components + components[c].second];
+            }
+        }
+      Utilities::MPI::sum(ArrayView<const double>(sums),
+                          communicator,
+                          ArrayView<double>(sums));
+      std::vector<std::vector<double>> rows(n_groups);
+      for (unsigned int g = 0; g < n_groups; ++g)
+        rows[g].assign(sums.begin() + g * width,
+                       sums.begin() + (g + 1) * width);
+      return rows;
+    }
   } // namespace
 
 
@@ -142,33 +252,7 @@ namespace PolyFrac
                    std::vector<std::string>           &columns,
                    const MPI_Comm                      communicator)
   {
-    // The components of each array that the columns show: a vector's
-    // first spacedim, a tensor's spacedim × spacedim of its 3 × 3.
-    const std::string                          axes = "xyz";
-    std::vector<std::pair<unsigned, unsigned>> components; // (array, index)
-    columns.clear();
-    for (unsigned int a = 0; a < data.cell_arrays.size(); ++a)
-      {
-        const auto &array = data.cell_arrays[a];
-        if (array.n_components == 1)
-          {
-            columns.push_back(array.name);
-            components.emplace_back(a, 0);
-          }
-        else if (array.n_components == 3)
-          for (unsigned int d = 0; d < spacedim; ++d)
-            {
-              columns.push_back(array.name + "_" + axes[d]);
-              components.emplace_back(a, d);
-            }
-        else
-          for (unsigned int i = 0; i < spacedim; ++i)
-            for (unsigned int j = 0; j < spacedim; ++j)
-              {
-                columns.push_back(array.name + "_" + axes[i] + axes[j]);
-                components.emplace_back(a, 3 * i + j);
-              }
-      }
+    const auto components = cell_data_components(data, columns);
 
     const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
@@ -218,9 +302,9 @@ namespace PolyFrac
                                         const std::string &directory,
                                         const unsigned int level,
                                         const MPI_Comm     communicator)
-    : file_name("line-" + probe.name + "-level-" + std::to_string(level) +
-                ".csv")
-    , path(directory + "/" + file_name)
+    : csv(directory,
+          "line-" + probe.name + "-level-" + std::to_string(level) + ".csv",
+          communicator)
     , communicator(communicator)
   {
     for (unsigned int i = 0; i < probe.n_points; ++i)
@@ -230,11 +314,6 @@ namespace PolyFrac
         for (unsigned int d = 0; d < dim; ++d)
           x[d] = (1 - s) * probe.start[d] + s * probe.end[d];
         points.push_back(x);
-      }
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        file.open(path);
-        AssertThrow(file, ExcMessage("Cannot write <" + path + ">."));
       }
   }
 
@@ -263,7 +342,7 @@ namespace PolyFrac
       }
 
     std::ostringstream text;
-    if (written.empty())
+    if (csv.text().empty())
       {
         text << "time,arc_length,x,y" << (dim == 3 ? ",z" : "");
         for (const std::string &column : columns)
@@ -286,14 +365,28 @@ namespace PolyFrac
           }
         text << "\n";
       }
-    append(text.str());
+    csv.append(text.str());
   }
 
 
 
-  template <int dim>
+  CsvSeries::CsvSeries(const std::string &directory,
+                       const std::string &file_name,
+                       const MPI_Comm     communicator)
+    : file_name(file_name)
+    , path(directory + "/" + file_name)
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        file.open(path);
+        AssertThrow(file, ExcMessage("Cannot write <" + path + ">."));
+      }
+  }
+
+
+
   void
-  LineProbeSeries<dim>::append(const std::string &text)
+  CsvSeries::append(const std::string &text)
   {
     written += text;
     if (file.is_open())
@@ -305,9 +398,8 @@ namespace PolyFrac
 
 
 
-  template <int dim>
   void
-  LineProbeSeries<dim>::restore(const std::string &text)
+  CsvSeries::restore(const std::string &text)
   {
     written.clear();
     if (file.is_open())
@@ -316,6 +408,88 @@ namespace PolyFrac
         file.open(path);
       }
     append(text);
+  }
+
+
+
+  template <int dim>
+  RegionIntegralSeries<dim>::RegionIntegralSeries(
+    const std::string                    &directory,
+    const unsigned int                    level,
+    const std::vector<types::material_id> polytope_regions,
+    const unsigned int                    n_fractures,
+    const MPI_Comm                        communicator)
+    : csv(directory,
+          "regions-level-" + std::to_string(level) + ".csv",
+          communicator)
+    , polytope_regions(polytope_regions)
+    , regions(polytope_regions)
+    , n_fractures(n_fractures)
+    , communicator(communicator)
+  {
+    std::sort(regions.begin(), regions.end());
+    regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
+  }
+
+
+
+  template <int dim>
+  void
+  RegionIntegralSeries<dim>::write(const PatchData<dim, dim>     &matrix,
+                                   const PatchData<dim - 1, dim> *fractures,
+                                   const double                   t)
+  {
+    std::vector<std::string> columns, fracture_columns;
+    const auto               region_rows = group_integrals(
+      matrix,
+      "polytope",
+      [this](const unsigned int K) {
+        return static_cast<unsigned int>(std::lower_bound(regions.begin(),
+                                                          regions.end(),
+                                                          polytope_regions[K]) -
+                                         regions.begin());
+      },
+      regions.size(),
+      columns,
+      communicator);
+    const auto fracture_rows = fractures != nullptr ?
+                                 group_integrals(
+                                   *fractures,
+                                   "fracture",
+                                   [](const unsigned int f) { return f; },
+                                   n_fractures,
+                                   fracture_columns,
+                                   communicator) :
+                                 std::vector<std::vector<double>>();
+
+    std::ostringstream text;
+    if (csv.text().empty())
+      {
+        text << "time,kind,id,measure";
+        for (const auto *list : {&columns, &fracture_columns})
+          for (const std::string &column : *list)
+            text << "," << column;
+        text << "\n";
+      }
+    // One row: its sums over the measure, the other kind's columns empty.
+    const auto row = [&](const std::string         &kind,
+                         const unsigned int         id,
+                         const std::vector<double> &sums,
+                         const unsigned int         before,
+                         const unsigned int         after) {
+      if (!(sums[0] > 0))
+        return;
+      text << std::setprecision(12) << t << "," << kind << "," << id << ","
+           << sums[0] << std::setprecision(9) << std::string(before, ',');
+      for (unsigned int c = 1; c < sums.size(); ++c)
+        text << "," << sums[c] / sums[0];
+      text << std::string(after, ',') << "\n";
+    };
+    for (unsigned int r = 0; r < regions.size(); ++r)
+      row("region", regions[r], region_rows[r], 0, fracture_columns.size());
+    for (unsigned int f = 0; f < fracture_rows.size(); ++f)
+      row("fracture", f, fracture_rows[f], columns.size(), 0);
+    csv.append(text.str());
   }
 
 
@@ -342,4 +516,6 @@ namespace PolyFrac
                    const MPI_Comm);
   template class LineProbeSeries<2>;
   template class LineProbeSeries<3>;
+  template class RegionIntegralSeries<2>;
+  template class RegionIntegralSeries<3>;
 } // namespace PolyFrac

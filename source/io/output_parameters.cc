@@ -56,6 +56,15 @@ namespace PolyFrac
       "is written to line-NAME-level-K.csv (columns time, arc_length, x, "
       "y[, z], then the fields; a field is empty where the point lies in "
       "no cell, or for the fracture fields on no fracture face).");
+    prm.declare_entry(
+      "Region integrals",
+      "false",
+      Patterns::Bool(),
+      "Whether every output time writes to regions-level-K.csv, for each "
+      "region of the matrix and each fracture, its volume (area) and the "
+      "mean over it of every field constant over a cell or a fracture face "
+      "(pressure, concentration, stresses, ...; fracture pressure, "
+      "aperture, ...).");
     prm.leave_subsection();
   }
 
@@ -79,6 +88,7 @@ namespace PolyFrac
     print_timings       = prm.get_bool("Print timings");
     checkpoint_interval = prm.get_integer("Checkpoint interval");
     read_line_probes(prm.get("Line probes"), context);
+    region_integrals = prm.get_bool("Region integrals");
     prm.leave_subsection();
   }
 

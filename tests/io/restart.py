@@ -15,7 +15,8 @@ instability, with the same files. With SCENE = tracer, the same for
 Model = flow with the passive tracer (prm/benchmarks/flemisch-case-2.prm on
 64 x 64 cells, Transport/Enabled, fluid of concentration 1 flowing in at
 0.04 m/s, so that the front is 0.6 m across at t = 15 s): the
-resumed run carries the concentrations and the tracer's amounts.
+resumed run carries the concentrations and the tracer's amounts, and
+writes the same region integrals.
 
 usage: restart.py POLYFRAC SOURCE_DIR WORK_DIR N_RANKS END_TIME [SCENE]
 (End time of the scene, steps of 0.5 s; the run is stopped after 3 steps;
@@ -52,6 +53,7 @@ if kind == "tracer":
               "--set", "Transport/Enabled=true",
               "--set", "Transport/Inflow concentration=1",
               "--set", "Transport/Porosity=1",
+              "--set", "Output/Region integrals=true",
               # A slow inflow: the front is in the middle at the end.
               "--set", "Flow/Flux boundary expression=-0.04"]
 # The lines of the summary at the end of the run: the fluid volumes of all

@@ -92,7 +92,8 @@ for n in (8, 16, 32, 64):
     name = f"plug-{n}"
     mesh, _, a = run(name, "Fractures/Segments=",
                      f"Mesh/Subdivisions={n}, {n}", "Time/End time=0.75",
-                     f"Time/Time step={0.5 / n}", "Transport/Porosity=0.5",
+                     f"Time/Time step={0.5 / n}", "Time/Output times=0.75",
+                     "Transport/Porosity=0.5",
                      f"Transport/Inflow concentration={C_IN}")
     c = cell_data(mesh, "concentration")
     x = centroids(mesh)[:, 0]

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
 
 #include <polyfrac/io/output_parameters.h>
 #include <polyfrac/io/vtu_writer.h>
@@ -34,6 +35,50 @@ namespace PolyFrac
                    const MPI_Comm                      communicator);
 
   /**
+   * A CSV file written piece by piece over the output times of a level, by
+   * the root rank of a communicator, whose text so far is kept so that a
+   * checkpoint can restore it (text(), restore()).
+   */
+  class CsvSeries
+  {
+  public:
+    /** The file @p file_name in @p directory (opened on the root rank). */
+    CsvSeries(const std::string &directory,
+              const std::string &file_name,
+              const MPI_Comm     communicator);
+
+    /** The name of the file. */
+    const std::string &
+    name() const
+    {
+      return file_name;
+    }
+
+    /** The text written so far. */
+    const std::string &
+    text() const
+    {
+      return written;
+    }
+
+    /** Appends @p text to the file (root rank) and to text(); throws if
+     * the file cannot be written. */
+    void
+    append(const std::string &text);
+
+    /** Replaces the file by @p text (the text of a checkpoint). */
+    void
+    restore(const std::string &text);
+
+  private:
+    const std::string file_name, path;
+    std::ofstream     file;
+    std::string       written;
+  };
+
+
+
+  /**
    * One line of Output/Line probes over the output times of a level:
    * line-NAME-level-K.csv with the columns time, arc_length, x, y[, z], the
    * matrix fields and the fracture fields (sample_cell_data()), one row per
@@ -57,35 +102,56 @@ namespace PolyFrac
           const PatchData<dim - 1, dim> *fractures,
           const double                   t);
 
-    /** The name of its file, line-NAME-level-K.csv. */
-    const std::string &
-    name() const
-    {
-      return file_name;
-    }
-
-    /** The text written so far (for a checkpoint). */
-    const std::string &
-    text() const
-    {
-      return written;
-    }
-
-    /** Replaces the file by @p text (the text of a checkpoint). */
-    void
-    restore(const std::string &text);
+    /** Its file, line-NAME-level-K.csv, and what it holds so far. */
+    CsvSeries csv;
 
   private:
-    /** Appends @p text to the file (root rank) and to #written. */
-    void
-    append(const std::string &text);
-
-    /** line-NAME-level-K.csv, and its path. */
-    const std::string       file_name, path;
     const MPI_Comm          communicator;
     std::vector<Point<dim>> points;
-    std::ofstream           file;
-    std::string             written;
+  };
+
+
+
+  /**
+   * Output/Region integrals over the output times of a level:
+   * regions-level-K.csv, at each output time one row per region of the
+   * matrix (kind `region`, its id) and one per fracture (kind `fracture`,
+   * its index): its measure (volume, or fracture area; in 2D area and
+   * length per unit thickness) and the mean over it of every component of
+   * the cell data of the solution and fracture outputs (the columns of
+   * sample_cell_data(); a region's row leaves the fracture columns empty,
+   * a fracture's the matrix columns). The means are of the values written
+   * to the VTU files (single precision). On several ranks the sums over
+   * the ranks' patches.
+   */
+  template <int dim>
+  class RegionIntegralSeries
+  {
+  public:
+    /** The series of @p level in @p directory; @p polytope_regions: the
+     * region of each polytope, @p n_fractures: the fractures. */
+    RegionIntegralSeries(const std::string                    &directory,
+                         const unsigned int                    level,
+                         const std::vector<types::material_id> polytope_regions,
+                         const unsigned int                    n_fractures,
+                         const MPI_Comm                        communicator);
+
+    /** Appends the means of the matrix output @p matrix and the fracture
+     * output @p fractures (null: none) at time @p t. */
+    void
+    write(const PatchData<dim, dim>     &matrix,
+          const PatchData<dim - 1, dim> *fractures,
+          const double                   t);
+
+    /** Its file, regions-level-K.csv, and what it holds so far. */
+    CsvSeries csv;
+
+  private:
+    const std::vector<types::material_id> polytope_regions;
+    /** The regions of the mesh, sorted. */
+    std::vector<types::material_id> regions;
+    const unsigned int              n_fractures;
+    const MPI_Comm                  communicator;
   };
 } // namespace PolyFrac
 

@@ -82,6 +82,9 @@ namespace PolyFrac
     /** Line probes: the lines along which every output time samples the
      * fields constant over a cell (LineProbeSeries). */
     std::vector<LineProbe> line_probes;
+    /** Whether every output time writes the regional means
+     * (RegionIntegralSeries). */
+    bool region_integrals = false;
     /** Whether the run continues from its checkpoint (the command line's
      * --resume, not an entry). */
     bool resume = false;
