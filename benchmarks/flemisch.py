@@ -33,6 +33,7 @@ seconds, error) and, unless --no-charts, benchmarks/flemisch-errors.png and
 benchmarks/flemisch-profiles.png (python3-matplotlib).
 """
 import argparse
+import bisect
 import csv
 import math
 import os
@@ -74,7 +75,6 @@ def read_reference(name):
 def interpolate(s, xs, ys):
     """The piecewise linear interpolant of (XS, YS) at S (XS sorted; constant
     beyond its ends)."""
-    import bisect
     i = bisect.bisect_right(xs, s)
     if i == 0:
         return ys[0]

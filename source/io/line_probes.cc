@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace PolyFrac
 {
@@ -414,16 +415,16 @@ namespace PolyFrac
 
   template <int dim>
   RegionIntegralSeries<dim>::RegionIntegralSeries(
-    const std::string                    &directory,
-    const unsigned int                    level,
-    const std::vector<types::material_id> polytope_regions,
-    const unsigned int                    n_fractures,
-    const MPI_Comm                        communicator)
+    const std::string              &directory,
+    const unsigned int              level,
+    std::vector<types::material_id> polytope_regions,
+    const unsigned int              n_fractures,
+    const MPI_Comm                  communicator)
     : csv(directory,
           "regions-level-" + std::to_string(level) + ".csv",
           communicator)
-    , polytope_regions(polytope_regions)
-    , regions(polytope_regions)
+    , polytope_regions(std::move(polytope_regions))
+    , regions(this->polytope_regions)
     , n_fractures(n_fractures)
     , communicator(communicator)
   {

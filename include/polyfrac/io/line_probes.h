@@ -130,11 +130,11 @@ namespace PolyFrac
   public:
     /** The series of @p level in @p directory; @p polytope_regions: the
      * region of each polytope, @p n_fractures: the fractures. */
-    RegionIntegralSeries(const std::string                    &directory,
-                         const unsigned int                    level,
-                         const std::vector<types::material_id> polytope_regions,
-                         const unsigned int                    n_fractures,
-                         const MPI_Comm                        communicator);
+    RegionIntegralSeries(const std::string              &directory,
+                         const unsigned int              level,
+                         std::vector<types::material_id> polytope_regions,
+                         const unsigned int              n_fractures,
+                         const MPI_Comm                  communicator);
 
     /** Appends the means of the matrix output @p matrix and the fracture
      * output @p fractures (null: none) at time @p t. */
