@@ -1,25 +1,36 @@
 #!/usr/bin/python3
 """Berre et al. (2021), "Verification benchmarks for single-phase flow in
-three-dimensional fractured porous media", case 1 (single fracture), its
-steady head (prm/benchmarks/berre-case-1.prm) against the benchmark's
-participants at their middle refinement (about 10,000 cells), with the
-benchmark's own measures (benchmarks/data/berre/, derived by berre_band.py
-from the benchmark's data):
+three-dimensional fractured porous media": case 1 (single fracture,
+prm/benchmarks/berre-case-1.prm: the steady head and a tracer) and case 2
+(the regular network, conductive and blocking: berre-case-2.prm,
+berre-case-2-blocking.prm, the steady pressure) against the benchmark's
+participants at their middle refinement (about 10,000 cells in case 1,
+4,000 in case 2), with the benchmark's own measures (benchmarks/data/berre/,
+derived by berre_band.py from the benchmark's data):
 
-- the match count: of 100 evenly spaced points of the line from
-  (0, 100, 100) to (100, 0, 0), those where the head lies within the band
-  between the 10 % and 90 % percentiles of the 17 participating methods
-  (compare_my_method.py's rule), to be compared with the participants'
-  own counts (median 90);
-- the relative L2 error against the reference (USTUTT's MPFA at
-  refinement 5) on the band's 1,000 points, divided by the reference's
-  range, the participants' computed the same way.
+- the match count: of 100 evenly spaced points of a curve, those where
+  PolyFrac's value lies within the band between the 10 % and 90 %
+  percentiles of the participating methods (compare_my_method.py's rule),
+  to be compared with the participants' own counts. The curves: the
+  pressure along the benchmark's line (case 1: (0, 100, 100) to
+  (100, 0, 0); case 2: (0, 0, 0) to (1, 1, 1)); in case 1 also the
+  matrix concentration along that line and the fracture concentration
+  along (0, 100, 80)-(100, 0, 20) at t = 1e9 s, and over time the tracer
+  held in the bottom layer (the integral of porosity times concentration)
+  and in the fracture (porosity times aperture times concentration,
+  integrated over it), the same rule applied to those curves;
+- for the pressure, the relative L2 error against the reference (USTUTT's
+  MPFA at its finest refinement) on the band's 1,000 points, divided by
+  the reference's range, the participants' computed the same way.
 
-PolyFrac's head is sampled by the line probe at 1,001 points (a constant
-per cell) and interpolated linearly like the participants' curves.
+PolyFrac's values are those of its line probes (a constant per cell or
+fracture face, interpolated linearly like the participants' curves) and of
+its region integrals (Output/Region integrals).
 
-usage: benchmarks/berre.py [--levels N] [--polyfrac PATH] [--work DIR]
-Writes benchmarks/berre-case-1.csv and prints it beside the participants.
+usage: benchmarks/berre.py [--case CASE ...] [--levels N] [--polyfrac PATH]
+                           [--work DIR]
+Writes benchmarks/berre-CASE.csv for each case (case-1, case-2-conductive,
+case-2-blocking; all by default) and prints it beside the participants.
 """
 import argparse
 import csv
@@ -30,24 +41,65 @@ import flemisch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "data", "berre")
+# The tracer held per unit of concentration and of measure: case 1's
+# porosity of the bottom layer (region 3), and its fracture's porosity
+# times its aperture (prm/benchmarks/berre-case-1.prm).
+BOTTOM, FRACTURE = 0.25, 0.4 * 1e-2
+# Per case: its scene and its curves, each a quantity of benchmarks/data/
+# berre and where PolyFrac's curve comes from: a line probe and its column,
+# or a row of the region integrals (kind, id), the column and a factor.
+CASES = {
+    "case-1": ("berre-case-1.prm", {
+        "pressure": ("line", "diagonal", "pressure"),
+        "c-matrix": ("line", "diagonal", "concentration"),
+        "c-fracture": ("line", "fracture", "fracture_concentration"),
+        "c-bottom-over-time": ("region", ("region", "3"), "concentration",
+                               BOTTOM),
+        "c-fracture-over-time": ("region", ("fracture", "0"),
+                                 "fracture_concentration", FRACTURE)}),
+    "case-2-conductive": ("berre-case-2.prm", {
+        "pressure": ("line", "diagonal", "pressure")}),
+    "case-2-blocking": ("berre-case-2-blocking.prm", {
+        "pressure": ("line", "diagonal", "pressure")}),
+}
 
 
 def read_columns(name):
-    """The columns of the CSV file NAME of benchmarks/data/berre."""
+    """The columns of the CSV file NAME of benchmarks/data/berre (an empty
+    field, a size a participant did not give, read as NaN)."""
     with open(os.path.join(DATA, name)) as file:
         rows = list(csv.DictReader(file))
-    return {key: [float(r[key]) for r in rows] for key in rows[0]
-            if key != "method"}
+    return {key: [float(r[key]) if r[key] else math.nan for r in rows]
+            for key in rows[0] if key != "method"}
 
 
-def measures(probe):
-    """The match count and the relative L2 error of the head of the probe
-    file PROBE."""
-    band = read_columns("case-1-pressure-band.csv")
-    reference = read_columns("case-1-pressure-reference.csv")
-    values = flemisch.read_probe(probe, "pressure")
+def region_series(path, kind, region, column, factor):
+    """(time, factor times the measure times the mean of COLUMN) of the
+    region (kind, id) of the region integrals file PATH."""
+    with open(path) as file:
+        rows = [r for r in csv.DictReader(file)
+                if (r["kind"], r["id"]) == (kind, region)]
+    return [(float(r["time"]),
+             factor * float(r["measure"]) * float(r[column])) for r in rows]
+
+
+def curve_of(directory, level, source):
+    """PolyFrac's curve (abscissa, value) of level LEVEL in DIRECTORY."""
+    if source[0] == "line":
+        return flemisch.read_probe(os.path.join(
+            directory, f"line-{source[1]}-level-{level}.csv"), source[2])
+    return region_series(os.path.join(
+        directory, f"regions-level-{level}.csv"), *source[1], *source[2:])
+
+
+def measures(values, name):
+    """The match count of the curve VALUES ((abscissa, value) pairs)
+    against the band of the quantity NAME (e.g. case-1-pressure), and its
+    relative L2 error against the reference where there is one (else
+    None)."""
+    band = read_columns(name + "-band.csv")
     s, p = [v[0] for v in values], [v[1] for v in values]
-    ls = band["arc_length"]
+    ls = band["abscissa"]
     matches = 0
     for k in range(100):
         x = ls[0] + (ls[-1] - ls[0]) * k / 99
@@ -55,46 +107,80 @@ def measures(probe):
         if (flemisch.interpolate(x, ls, band["lower"]) <= y <=
                 flemisch.interpolate(x, ls, band["upper"])):
             matches += 1
-    span = max(reference["pressure"]) - min(reference["pressure"])
+    if not os.path.exists(os.path.join(DATA, name + "-reference.csv")):
+        return matches, None
+    reference = read_columns(name + "-reference.csv")
+    span = max(reference["value"]) - min(reference["value"])
     squares = [(flemisch.interpolate(x, s, p) - flemisch.interpolate(
-        x, reference["arc_length"], reference["pressure"]))**2 for x in ls]
+        x, reference["abscissa"], reference["value"]))**2 for x in ls]
     return matches, math.sqrt(sum(squares) / len(squares)) / span
+
+
+def participants(name):
+    """The participants' rows of the quantity NAME."""
+    with open(os.path.join(DATA, name + "-participants.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def median(values):
+    values = sorted(values)
+    return values[len(values) // 2]
+
+
+def compare(case, arguments):
+    """Runs the scene of CASE, writes berre-CASE.csv and prints it beside
+    the participants."""
+    scene, curves = CASES[case]
+    work = os.path.join(arguments.work, case)
+    levels = flemisch.run_scene(arguments.polyfrac, scene, work,
+                                arguments.levels)
+    rows = []
+    for level in levels:
+        row = {"level": level["level"], "cells": level["n_cells"],
+               "unknowns": level["n_dofs"],
+               "wall_seconds": level["wall_seconds"]}
+        for quantity, source in curves.items():
+            matches, error = measures(
+                curve_of(work, level["level"], source),
+                f"{case}-{quantity}")
+            row[f"{quantity}_matches"] = matches
+            if error is not None:
+                row[f"{quantity}_relative_l2_error"] = f"{error:.4e}"
+        rows.append(row)
+    with open(os.path.join(HERE, f"berre-{case}.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, list(rows[0]), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    print(case)
+    for quantity in curves:
+        others = participants(f"{case}-{quantity}")
+        print(f"  {quantity}: matches of PolyFrac's levels "
+              f"{[r[quantity + '_matches'] for r in rows]}, participants' "
+              f"median {median(int(r['matches']) for r in others)} "
+              f"(range {min(int(r['matches']) for r in others)}-"
+              f"{max(int(r['matches']) for r in others)})")
+        if "relative_l2_error" in others[0]:
+            print(f"  {quantity}: relative L2 errors "
+                  f"{[r[quantity + '_relative_l2_error'] for r in rows]}, "
+                  f"participants' median "
+                  f"{median(float(r['relative_l2_error']) for r in others)}")
+    for r in rows:
+        print(f"  level {r['level']}: {r['cells']} cells, {r['unknowns']} "
+              f"unknowns, {float(r['wall_seconds']):.1f} s")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--case", nargs="+", choices=list(CASES),
+                        default=list(CASES))
     parser.add_argument("--levels", type=int, default=2)
     parser.add_argument("--polyfrac", default=os.path.join(
         os.path.dirname(HERE), "build", "polyfrac"))
     parser.add_argument("--work", default=os.path.join(
-        os.path.dirname(HERE), "output", "berre-case-1"))
+        os.path.dirname(HERE), "output", "berre"))
     arguments = parser.parse_args()
-    levels = flemisch.run_scene(arguments.polyfrac, "berre-case-1.prm",
-                                arguments.work, arguments.levels)
-    rows = []
-    for level in levels:
-        k = level["level"]
-        matches, error = measures(os.path.join(
-            arguments.work, f"line-diagonal-level-{k}.csv"))
-        rows.append({"method": f"PolyFrac level {k}",
-                     "cells": level["n_cells"], "unknowns": level["n_dofs"],
-                     "wall_seconds": level["wall_seconds"],
-                     "matches": matches, "relative_l2_error": f"{error:.4e}"})
-    with open(os.path.join(HERE, "berre-case-1.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    with open(os.path.join(DATA, "case-1-pressure-participants.csv")) as f:
-        others = list(csv.DictReader(f))
-    counts = sorted(int(r["matches"]) for r in others)
-    errors = sorted(float(r["relative_l2_error"]) for r in others)
-    print(f"{'method':28} {'cells':>7} {'unknowns':>9} {'matches':>7} "
-          f"{'L2 error':>10}")
-    for r in others + rows:
-        print(f"{r['method']:28} {r['cells']:>7} {r['unknowns']:>9} "
-              f"{r['matches']:>7} {float(r['relative_l2_error']):10.3e}")
-    print(f"participants' medians: {counts[len(counts) // 2]} matches, "
-          f"L2 error {errors[len(errors) // 2]:.3e}")
+    for case in arguments.case:
+        compare(case, arguments)
 
 
 if __name__ == "__main__":

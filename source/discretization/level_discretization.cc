@@ -164,6 +164,7 @@ namespace PolyFrac
     const std::vector<Fracture<dim>> fractures =
       fractures_from<dim>(prm.fractures);
     MeshBuilder::assign_regions(prm.mesh, triangulation);
+    MeshBuilder::assign_boundary_ids(prm.mesh, triangulation);
     mesh = std::make_unique<PolytopalMesh<dim>>(
       PolytopalMesh<dim>::from_triangulation(triangulation));
 

@@ -192,14 +192,21 @@ namespace PolyFrac
     {
       for (const auto &box : prm.region_boxes)
         for (const auto &cell : tria.active_cell_iterators())
-          {
-            const Point<dim> c      = cell->center();
-            bool             inside = true;
-            for (unsigned int d = 0; d < dim; ++d)
-              inside = inside && c[d] >= box.lower[d] && c[d] <= box.upper[d];
-            if (inside)
-              cell->set_material_id(box.id);
-          }
+          if (box.contains(cell->center()))
+            cell->set_material_id(box.id);
+    }
+
+
+
+    template <int dim>
+    void
+    assign_boundary_ids(const MeshParameters &prm, Triangulation<dim> &tria)
+    {
+      for (const auto &box : prm.boundary_boxes)
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && box.contains(face->center()))
+              face->set_boundary_id(box.id);
     }
 
 
@@ -359,6 +366,10 @@ namespace PolyFrac
 
     template void
     assign_regions(const MeshParameters &, Triangulation<2> &);
+    template void
+    assign_boundary_ids(const MeshParameters &, Triangulation<2> &);
+    template void
+    assign_boundary_ids(const MeshParameters &, Triangulation<3> &);
     template void
     assign_regions(const MeshParameters &, Triangulation<3> &);
     template void

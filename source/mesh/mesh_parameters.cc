@@ -121,6 +121,20 @@ namespace PolyFrac
                       "",
                       Patterns::List(Patterns::Integer(0, 65535)),
                       "The region of each of the Region boxes.");
+    prm.declare_entry(
+      "Boundary boxes",
+      "",
+      Patterns::Anything(),
+      "Closed boxes <lower : upper; lower : upper; ...>: the boundary faces "
+      "whose centre lies in box i get the boundary id <Boundary box ids>[i] "
+      "(a later box wins where boxes overlap), e.g. an inflow window on a "
+      "part of a side. Every other boundary face keeps its id: that of its "
+      "side in a generated box (0, 1: x low, high; 2, 3: y; 4, 5: z), its "
+      "physical group in a gmsh mesh.");
+    prm.declare_entry("Boundary box ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 65535)),
+                      "The boundary id of each of the Boundary boxes.");
     prm.leave_subsection();
   }
 
@@ -198,7 +212,10 @@ namespace PolyFrac
     random_seed        = prm.get_integer("Random seed");
     cells_per_polytope = prm.get_integer("Cells per polytope");
     file_name          = prm.get("File name");
-    read_region_boxes(prm, where, context.dim);
+    region_boxes =
+      read_id_boxes(prm, "Region boxes", "Region box ids", where, context.dim);
+    boundary_boxes = read_id_boxes(
+      prm, "Boundary boxes", "Boundary box ids", where, context.dim);
     prm.leave_subsection();
     AssertThrow(source == MeshSource::gmsh || file_name.empty(),
                 ExcMessage(
@@ -224,44 +241,46 @@ namespace PolyFrac
 
 
 
-  void
-  MeshParameters::read_region_boxes(ParameterHandler  &prm,
-                                    const std::string &where,
-                                    const unsigned int dim)
+  std::vector<MeshParameters::IdBox>
+  MeshParameters::read_id_boxes(ParameterHandler  &prm,
+                                const std::string &boxes_entry,
+                                const std::string &ids_entry,
+                                const std::string &where,
+                                const unsigned int dim)
   {
-    const auto boxes =
-      ParameterParsing::parse_point_lists(prm.get("Region boxes"),
+    const std::string given = prm.get(boxes_entry);
+    const auto        boxes =
+      ParameterParsing::parse_point_lists(given,
                                           dim,
-                                          where + " <Region boxes>");
-    const std::vector<unsigned int> ids =
-      ParameterParsing::read_ids<unsigned int>(prm.get("Region box ids"),
-                                               "Region box ids",
-                                               where);
-    AssertThrow(
-      boxes.size() == ids.size(),
-      ExcMessage(where + ": <Region boxes> = " + prm.get("Region boxes") +
-                 " gives " + std::to_string(boxes.size()) +
-                 " boxes, but <Region box ids> = " + prm.get("Region box ids") +
-                 " gives " + std::to_string(ids.size()) +
-                 " ids: give one region id per box."));
-    region_boxes.clear();
+                                          where + " <" + boxes_entry + ">");
+    // Several boxes may share an id (a region or a window of several
+    // boxes).
+    const std::vector<int> ids = Utilities::string_to_int(
+      Utilities::split_string_list(prm.get(ids_entry)));
+    AssertThrow(boxes.size() == ids.size(),
+                ExcMessage(
+                  where + ": <" + boxes_entry + "> = " + given + " gives " +
+                  std::to_string(boxes.size()) + " boxes, but <" + ids_entry +
+                  "> = " + prm.get(ids_entry) + " gives " +
+                  std::to_string(ids.size()) + " ids: give one id per box."));
+    std::vector<IdBox> result;
     for (unsigned int i = 0; i < boxes.size(); ++i)
       {
         AssertThrow(boxes[i].size() == 2,
-                    ExcMessage(where +
-                               ": <Region boxes> = " + prm.get("Region boxes") +
+                    ExcMessage(where + ": <" + boxes_entry + "> = " + given +
                                ": box " + std::to_string(i) +
                                " must read <lower corner : upper corner>."));
         for (unsigned int d = 0; d < 3; ++d)
           AssertThrow(boxes[i][0][d] <= boxes[i][1][d],
-                      ExcMessage(where + ": <Region boxes> = " +
-                                 prm.get("Region boxes") + ": box " +
-                                 std::to_string(i) +
+                      ExcMessage(where + ": <" + boxes_entry + "> = " + given +
+                                 ": box " + std::to_string(i) +
                                  " has its lower corner above its upper one "
                                  "in direction " +
                                  std::to_string(d) + "."));
-        region_boxes.push_back({boxes[i][0], boxes[i][1], ids[i]});
+        result.push_back(
+          {boxes[i][0], boxes[i][1], static_cast<unsigned int>(ids[i])});
       }
+    return result;
   }
 
 

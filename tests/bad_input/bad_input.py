@@ -978,6 +978,28 @@ CASES = {
          "ids> = 1, 2 gives 2 ids"],
         files={"scene.prm": section("Mesh", Region_boxes="-1, -1 : 1, 0",
                                     Region_box_ids="1, 2")}),
+    "boundary_box_ids_count": case(
+        "`Boundary boxes` with two boxes and `Boundary box ids = 6`",
+        ["<Boundary boxes> = -1, -1 : -1, 0; 1, -1 : 1, 1 gives 2 boxes, but "
+         "<Boundary box ids> = 6 gives 1 ids: give one id per box"],
+        files={"scene.prm": section("Mesh",
+                                    Boundary_boxes="-1, -1 : -1, 0; "
+                                    "1, -1 : 1, 1",
+                                    Boundary_box_ids="6")}),
+    "boundary_box_upside_down": case(
+        "`Boundary boxes = 1, -1 : -1, 0` (lower corner above the upper)",
+        ["<Boundary boxes> = 1, -1 : -1, 0: box 0 has its lower corner above "
+         "its upper one in direction 0"],
+        files={"scene.prm": section("Mesh", Boundary_boxes="1, -1 : -1, 0",
+                                    Boundary_box_ids="6")}),
+    "boundary_box_id_unused_by_faces": case(
+        "`Boundary boxes` catching no boundary face, its id 6 given to "
+        "`Dirichlet boundary ids`",
+        ["lists the id 6, which no boundary face of the mesh carries"],
+        files={"scene.prm": section("Mesh", Boundary_boxes="-0.5, -0.5 : "
+                                    "0.5, 0.5", Boundary_box_ids="6")
+               + section("Boundary conditions", Dirichlet_boundary_ids="6")},
+        stage="level"),
     "lithostatic_without_gravity": case(
         "`Initial stress/Kind = lithostatic` without Gravity/Vector",
         ["subsection <Initial stress>: <Kind> = lithostatic is the weight of "

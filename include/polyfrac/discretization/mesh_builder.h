@@ -44,6 +44,12 @@ namespace PolyFrac
     void
     assign_regions(const MeshParameters &prm, Triangulation<dim> &tria);
 
+    /** Gives the boundary faces whose centre lies in a Mesh/Boundary box
+     * its boundary id; a later box wins. */
+    template <int dim>
+    void
+    assign_boundary_ids(const MeshParameters &prm, Triangulation<dim> &tria);
+
     /** Refines the cells whose centre lies in the closed box. */
     template <int dim>
     void

@@ -136,30 +136,48 @@ namespace PolyFrac
     unsigned int random_seed;
     /** Cells per polytope of the METIS agglomeration (1: none). */
     unsigned int cells_per_polytope;
-    /** A Mesh/Region boxes item: the cells whose centre lies in the closed
-     * box from lower to upper belong to region id. */
-    struct RegionBox
+    /** A Mesh/Region boxes or Mesh/Boundary boxes item: the cells (the
+     * boundary faces) whose centre lies in the closed box from lower to
+     * upper get id. */
+    struct IdBox
     {
       /** The lower corner. */
       Point<3> lower;
       /** The upper corner. */
       Point<3> upper;
-      /** The region (material id) of the cells inside. */
-      types::material_id id;
+      /** The region (material id) of the cells inside, or the boundary id
+       * of the boundary faces inside. */
+      unsigned int id;
+
+      /** Whether @p x lies in the closed box (its first dim coordinates). */
+      template <int dim>
+      bool
+      contains(const Point<dim> &x) const
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (x[d] < lower[d] || x[d] > upper[d])
+            return false;
+        return true;
+      }
     };
     /** Region boxes with their Region box ids, in the order given. */
-    std::vector<RegionBox> region_boxes;
+    std::vector<IdBox> region_boxes;
+    /** Boundary boxes with their Boundary box ids, in the order given. */
+    std::vector<IdBox> boundary_boxes;
     /** File name of the gmsh mesh; a relative name is resolved against
      * the directory of the parameter file when parsed. */
     std::string file_name;
 
   private:
-    /** Reads Region boxes and Region box ids; throws naming the entries
-     * on a malformed box or lists of different lengths. */
-    void
-    read_region_boxes(ParameterHandler  &prm,
-                      const std::string &where,
-                      const unsigned int dim);
+    /** Reads the boxes of the entry @p boxes_entry and their ids from
+     * @p ids_entry (Region boxes or Boundary boxes); throws naming the
+     * entries on a malformed box or lists of different lengths. */
+    static std::vector<IdBox>
+    read_id_boxes(ParameterHandler  &prm,
+                  const std::string &boxes_entry,
+                  const std::string &ids_entry,
+                  const std::string &where,
+                  const unsigned int dim);
   };
 } // namespace PolyFrac
 
