@@ -18,7 +18,8 @@ derived by berre_band.py from the benchmark's data):
   along (0, 100, 80)-(100, 0, 20) at t = 1e9 s, and over time the tracer
   held in the bottom layer (the integral of porosity times concentration)
   and in the fracture (porosity times aperture times concentration,
-  integrated over it), the same rule applied to those curves;
+  integrated over it) and the rate at which it leaves through the outflow
+  window, the same rule applied to those curves;
 - for the pressure, the relative L2 error against the reference (USTUTT's
   MPFA at its finest refinement) on the band's 1,000 points, divided by
   the reference's range, the participants' computed the same way.
@@ -47,7 +48,8 @@ DATA = os.path.join(HERE, "data", "berre")
 BOTTOM, FRACTURE = 0.25, 0.4 * 1e-2
 # Per case: its scene and its curves, each a quantity of benchmarks/data/
 # berre and where PolyFrac's curve comes from: a line probe and its column,
-# or a row of the region integrals (kind, id), the column and a factor.
+# a row of the region integrals (kind, id), its column and the factor of
+# the integral of the column's mean, or a row's rate (a boundary's).
 CASES = {
     "case-1": ("berre-case-1.prm", {
         "pressure": ("line", "diagonal", "pressure"),
@@ -56,7 +58,9 @@ CASES = {
         "c-bottom-over-time": ("region", ("region", "3"), "concentration",
                                BOTTOM),
         "c-fracture-over-time": ("region", ("fracture", "0"),
-                                 "fracture_concentration", FRACTURE)}),
+                                 "fracture_concentration", FRACTURE),
+        "c-outflux-over-time": ("rate", ("boundary", "2"),
+                                "tracer_outflow")}),
     "case-2-conductive": ("berre-case-2.prm", {
         "pressure": ("line", "diagonal", "pressure")}),
     "case-2-blocking": ("berre-case-2-blocking.prm", {
@@ -73,13 +77,14 @@ def read_columns(name):
             for key in rows[0] if key != "method"}
 
 
-def region_series(path, kind, region, column, factor):
-    """(time, factor times the measure times the mean of COLUMN) of the
-    region (kind, id) of the region integrals file PATH."""
+def region_series(path, row, column, factor=None):
+    """The time series of COLUMN in the rows ROW = (kind, id) of the region
+    integrals file PATH: (time, value), or (time, FACTOR times the measure
+    times the value) if FACTOR is given (the integral of a mean)."""
     with open(path) as file:
         rows = [r for r in csv.DictReader(file)
-                if (r["kind"], r["id"]) == (kind, region)]
-    return [(float(r["time"]),
+                if (r["kind"], r["id"]) == row]
+    return [(float(r["time"]), float(r[column]) if factor is None else
              factor * float(r["measure"]) * float(r[column])) for r in rows]
 
 
@@ -89,7 +94,7 @@ def curve_of(directory, level, source):
         return flemisch.read_probe(os.path.join(
             directory, f"line-{source[1]}-level-{level}.csv"), source[2])
     return region_series(os.path.join(
-        directory, f"regions-level-{level}.csv"), *source[1], *source[2:])
+        directory, f"regions-level-{level}.csv"), *source[1:])
 
 
 def measures(values, name):

@@ -23,8 +23,9 @@ Case 1's quantities: the head along (0, 100, 100)-(100, 0, 0) ("pressure"),
 the matrix concentration along the same line at t = 1e9 s ("c-matrix"), the
 fracture concentration along (0, 100, 80)-(100, 0, 20) ("c-fracture"), and
 over time the integral of porosity times concentration over the bottom
-layer ("c-bottom-over-time") and over the fracture ("c-fracture-over-time";
-the files' column 1 and 2). DTU gave no concentrations. Case 2: the
+layer ("c-bottom-over-time") and over the fracture ("c-fracture-over-time")
+and the tracer's rate out through the outflow window
+("c-outflux-over-time"; the files' columns 1, 2 and 3). DTU gave no concentrations. Case 2: the
 pressure along (0, 0, 0)-(1, 1, 1), conductive ("case-2-conductive") and
 blocking ("case-2-blocking", only the methods whose pressure may jump
 across a fracture).
@@ -78,6 +79,9 @@ QUANTITIES = {
     "case-1-c-fracture-over-time": dict(
         folder="data/single/results/", methods=METHODS_1, skip=("DTU",),
         curve="dot_refinement_1.csv", sizes="results.csv", columns=(0, 2)),
+    "case-1-c-outflux-over-time": dict(
+        folder="data/single/results/", methods=METHODS_1, skip=("DTU",),
+        curve="dot_refinement_1.csv", sizes="results.csv", columns=(0, 3)),
     "case-2-conductive-pressure": dict(
         folder="data/regular/results/", methods=METHODS_2,
         curve="dol_cond_0_refinement_1.csv", sizes="results_cond_0.csv",

@@ -118,9 +118,18 @@ namespace PolyFrac
         report.failure   = what.str();
         return report;
       }
-    run_volumes += fluid_balance.step(data, previous, pressure, {}, {}, {});
+    const FluidVolumes volumes =
+      fluid_balance.step(data, previous, pressure, {}, {}, {});
+    run_volumes += volumes;
+    FluidVolumes tracer;
     if (transport)
-      run_tracer += transport->step(data, pressure, concentration);
+      {
+        tracer = transport->step(data, pressure, concentration);
+        run_tracer += tracer;
+      }
+    last_outflows        = PolyFrac::boundary_outflows(volumes,
+                                                transport ? &tracer : nullptr,
+                                                data.time_step);
     time                 = t_new;
     const auto &network  = *discretization.network;
     const auto &geometry = *discretization.geometry;
@@ -160,6 +169,15 @@ namespace PolyFrac
         out << std::endl;
         out.precision(precision);
       }
+  }
+
+
+
+  template <int dim>
+  std::vector<BoundaryOutflow>
+  FlowModel<dim>::boundary_outflows() const
+  {
+    return last_outflows;
   }
 
 

@@ -805,13 +805,25 @@ namespace PolyFrac
                                              const MechanicalState<dim> &u_new,
                                              const Vector<double>       &p_new)
   {
-    run_volumes += fluid_balance.step(data,
-                                      pressure,
-                                      p_new,
-                                      volume_changes(state),
-                                      volume_changes(u_new),
-                                      apertures(state));
+    const FluidVolumes volumes = fluid_balance.step(data,
+                                                    pressure,
+                                                    p_new,
+                                                    volume_changes(state),
+                                                    volume_changes(u_new),
+                                                    apertures(state));
+    run_volumes += volumes;
+    last_outflows =
+      PolyFrac::boundary_outflows(volumes, nullptr, data.time_step);
     time = data.time;
+  }
+
+
+
+  template <int dim>
+  std::vector<BoundaryOutflow>
+  PoromechanicsModel<dim>::boundary_outflows() const
+  {
+    return last_outflows;
   }
 
 

@@ -288,11 +288,18 @@ namespace PolyFrac
         std::vector<types::material_id> regions;
         for (const auto &cell : discretization.mesh->cells)
           regions.push_back(cell.region);
+        std::map<unsigned int, double> boundary_measures;
+        const auto                    &faces = discretization.mesh->faces;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (faces[f].at_boundary())
+            boundary_measures[faces[f].boundary_id] +=
+              discretization.geometry->faces[f].measure;
         region_integrals = std::make_unique<RegionIntegralSeries<dim>>(
           prm.output.directory,
           level,
           regions,
           discretization.network->n_fractures(),
+          boundary_measures,
           communicator);
       }
     const auto compression = compression_level(prm.output.vtu_compression);
@@ -404,6 +411,7 @@ namespace PolyFrac
     if (region_integrals)
       region_integrals->write(matrix,
                               fracture_faces ? &*fracture_faces : nullptr,
+                              model.boundary_outflows(),
                               t);
   }
 

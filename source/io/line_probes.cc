@@ -419,6 +419,7 @@ namespace PolyFrac
     const unsigned int              level,
     std::vector<types::material_id> polytope_regions,
     const unsigned int              n_fractures,
+    std::map<unsigned int, double>  boundary_measures,
     const MPI_Comm                  communicator)
     : csv(directory,
           "regions-level-" + std::to_string(level) + ".csv",
@@ -426,6 +427,7 @@ namespace PolyFrac
     , polytope_regions(std::move(polytope_regions))
     , regions(this->polytope_regions)
     , n_fractures(n_fractures)
+    , boundary_measures(std::move(boundary_measures))
     , communicator(communicator)
   {
     std::sort(regions.begin(), regions.end());
@@ -438,7 +440,8 @@ namespace PolyFrac
   void
   RegionIntegralSeries<dim>::write(const PatchData<dim, dim>     &matrix,
                                    const PatchData<dim - 1, dim> *fractures,
-                                   const double                   t)
+                                   const std::vector<BoundaryOutflow> &outflows,
+                                   const double                        t)
   {
     std::vector<std::string> columns, fracture_columns;
     const auto               region_rows = group_integrals(
@@ -470,7 +473,7 @@ namespace PolyFrac
         for (const auto *list : {&columns, &fracture_columns})
           for (const std::string &column : *list)
             text << "," << column;
-        text << "\n";
+        text << ",outflow,tracer_outflow\n";
       }
     // One row: its sums over the measure, the other kind's columns empty.
     const auto row = [&](const std::string         &kind,
@@ -484,12 +487,23 @@ namespace PolyFrac
            << sums[0] << std::setprecision(9) << std::string(before, ',');
       for (unsigned int c = 1; c < sums.size(); ++c)
         text << "," << sums[c] / sums[0];
-      text << std::string(after, ',') << "\n";
+      text << std::string(after, ',') << ",,\n";
     };
     for (unsigned int r = 0; r < regions.size(); ++r)
       row("region", regions[r], region_rows[r], 0, fracture_columns.size());
     for (unsigned int f = 0; f < fracture_rows.size(); ++f)
       row("fracture", f, fracture_rows[f], columns.size(), 0);
+    for (const BoundaryOutflow &outflow : outflows)
+      {
+        const auto measure = boundary_measures.find(outflow.id);
+        text << std::setprecision(12) << t << ",boundary," << outflow.id << ","
+             << (measure == boundary_measures.end() ? 0. : measure->second)
+             << std::string(columns.size() + fracture_columns.size(), ',')
+             << std::setprecision(9) << "," << outflow.fluid << ",";
+        if (outflow.tracer)
+          text << *outflow.tracer;
+        text << "\n";
+      }
     csv.append(text.str());
   }
 

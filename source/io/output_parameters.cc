@@ -64,7 +64,9 @@ namespace PolyFrac
       "region of the matrix and each fracture, its volume (area) and the "
       "mean over it of every field constant over a cell or a fracture face "
       "(pressure, concentration, stresses, ...; fracture pressure, "
-      "aperture, ...).");
+      "aperture, ...), and after a step of a model with flow, for each "
+      "boundary id, its area and the rates at which the step let the fluid "
+      "and the tracer out through it.");
     prm.leave_subsection();
   }
 

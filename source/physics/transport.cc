@@ -67,22 +67,25 @@ namespace PolyFrac
         }
     }
 
-    /** The volume flux @p F out of the domain from unknown @p from; where
-     * it enters (F < 0) it carries @p c_in. */
+    /** The volume flux @p F out of the domain from unknown @p from through
+     * boundary id @p boundary; where it enters (F < 0) it carries
+     * @p c_in. */
     void
     add_boundary_flux(const unsigned int from,
                       const double       F,
-                      const double       c_in)
+                      const double       c_in,
+                      const unsigned int boundary)
     {
       if (F > 0)
         {
           add(from, from, F);
-          outflow.emplace_back(from, F);
+          outflow.push_back({from, F, boundary});
         }
       else
         {
           rhs(from) -= F * c_in;
           inflow -= F * c_in;
+          inflow_by_boundary[boundary] -= F * c_in;
         }
     }
 
@@ -139,16 +142,38 @@ namespace PolyFrac
     leaving(const Vector<double> &c) const
     {
       double out = 0, taken = 0;
-      for (const auto &[k, F] : outflow)
-        out += F * c(k);
+      for (const Outflow &o : outflow)
+        out += o.F * c(o.from);
       for (const auto &[k, q] : extracted)
         taken += q * c(k);
       return {out, taken};
     }
 
+    /** The net rate at which @p c leaves through each boundary id. */
+    std::map<unsigned int, double>
+    leaving_by_boundary(const Vector<double> &c) const
+    {
+      std::map<unsigned int, double> rates;
+      for (const Outflow &o : outflow)
+        rates[o.boundary] += o.F * c(o.from);
+      for (const auto &[boundary, rate] : inflow_by_boundary)
+        rates[boundary] -= rate;
+      return rates;
+    }
+
+    /** A flux out through the boundary: from an unknown, through an id. */
+    struct Outflow
+    {
+      unsigned int from;
+      double       F;
+      unsigned int boundary;
+    };
+
     std::vector<std::map<unsigned int, double>>  rows;
     Vector<double>                               rhs;
-    std::vector<std::pair<unsigned int, double>> outflow, extracted;
+    std::vector<Outflow>                         outflow;
+    std::vector<std::pair<unsigned int, double>> extracted;
+    std::map<unsigned int, double>               inflow_by_boundary;
     double                                       inflow = 0, injected = 0;
   };
 
@@ -324,7 +349,8 @@ namespace PolyFrac
             system.add_boundary_flux(cells[0],
                                      F.face[f],
                                      inflow_concentration->value(
-                                       geometry.faces[f].centroid));
+                                       geometry.faces[f].centroid),
+                                     mesh.faces[f].boundary_id);
           else
             system.add_flux(cells[0], cells[1], F.face[f]);
         }
@@ -348,7 +374,8 @@ namespace PolyFrac
               system.add_boundary_flux(fracture_unknown(i),
                                        F.edge[i][k],
                                        inflow_concentration->value(
-                                         edges.edges[e].centroid));
+                                         edges.edges[e].centroid),
+                                       *edges.edges[e].boundary_ids.begin());
             else
               system.add_flux(fracture_unknown(i),
                               edge_unknown(e),
@@ -379,8 +406,11 @@ namespace PolyFrac
         pores[k] * (concentration(k) - previous(k));
     const auto [out, taken] = system.leaving(concentration);
     amounts.outflow         = dt * (out - system.inflow);
-    amounts.injected        = dt * system.injected;
-    amounts.extracted       = dt * taken;
+    for (const auto &[boundary, rate] :
+         system.leaving_by_boundary(concentration))
+      amounts.outflow_by_boundary[boundary] = dt * rate;
+    amounts.injected  = dt * system.injected;
+    amounts.extracted = dt * taken;
     // What moved in and out, each counted once: the scale of the balance.
     const double       moved = std::max({dt * out,
                                          dt * system.inflow,

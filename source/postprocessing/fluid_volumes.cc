@@ -80,7 +80,8 @@ namespace PolyFrac
         const auto &faces = mesh.cells[c].faces;
         for (unsigned int j = 0; j < faces.size(); ++j)
           if (mesh.faces[faces[j]].at_boundary())
-            volumes.outflow += dt * (darcy[j] + increment[j]);
+            volumes.add_outflow(mesh.faces[faces[j]].boundary_id,
+                                dt * (darcy[j] + increment[j]));
       }
 
     const std::vector<double> h_f = flow.fracture_sources(data.time);
@@ -98,8 +99,12 @@ namespace PolyFrac
             measure * (data.apertures[i] - apertures_before[i]);
         const auto fluxes = flow.fracture_fluxes(i, data.apertures, p_after);
         for (unsigned int k = 0; k < fluxes.size(); ++k)
-          if (!edges.edges[edges.face_edges[i][k].edge].boundary_ids.empty())
-            volumes.outflow += dt * fluxes[k];
+          {
+            const auto &ids =
+              edges.edges[edges.face_edges[i][k].edge].boundary_ids;
+            if (!ids.empty())
+              volumes.add_outflow(*ids.begin(), dt * fluxes[k]);
+          }
       }
     // A source, pressure or coefficient beyond double precision (1e300)
     // gives inf or NaN here while the mass balances, relative to their

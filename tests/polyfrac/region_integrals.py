@@ -9,11 +9,17 @@
    fractures, as the run prints them at its end (to 1e-5: the summary
    prints 6 digits, the means are of the single-precision VTU values); at
    t = 0 the means are the initial
-   pressure 1 and concentration 0. On 2 ranks (if mpirun is there) the same
-   numbers to 1e-6.
+   pressure 1 and concentration 0. The boundary rows after each step: each
+   side 1 long, the fluid's outflow -1 (the unit inflow on the left), 1
+   (the right side), 0 and 0 (top, bottom) to 1e-8, the tracer's -1 on the
+   left (c_in = 1); their tracer rates times the steps give the tracer that
+   left as printed. On 2 ranks (if mpirun is there) the same numbers to
+   1e-6.
 2. 3D, prm/benchmarks/berre-case-1.prm on level 0 (tetrahedra, the fracture
    triangles): region 2 (z > 10) has the volume 9e5, region 3 1e5, the
-   fracture the area 100 * sqrt(100^2 + 60^2), to 1e-9.
+   fracture the area 100 * sqrt(100^2 + 60^2), the inflow and outflow
+   windows (boundary ids 1, 2) 1,000 each and the rest of the boundary
+   58,000, to 1e-9.
 
 usage: region_integrals.py POLYFRAC SOURCE_DIR WORK_DIR
 Exits non-zero on the first failed check.
@@ -59,7 +65,8 @@ if times != [0.0, 0.1, 0.2]:
     fail(f"2d: output times {times}, expected 0, 0.1, 0.2")
 lengths = [1, 1, 0.5, 0.5, 0.25, 0.25]
 for r in rows:
-    expected = (0.5 if r["kind"] == "region" else lengths[int(r["id"])])
+    expected = {"region": 0.5, "boundary": 1}.get(r["kind"]) or \
+        lengths[int(r["id"])]
     if not close(float(r["measure"]), expected, 1e-12):
         fail(f"2d: {r['kind']} {r['id']} measures {r['measure']}, not "
              f"{expected}")
@@ -83,6 +90,26 @@ print(f"2d: tracer in the matrix {in_matrix} (printed "
 if not (close(in_matrix, amounts["matrix"], 1e-5) and
         close(in_fractures, amounts["fractures"], 1e-5)):
     fail("2d: the regional means do not give the tracer stored")
+# The sides' outflow rates after each step: -1 through the left side (the
+# unit inflow), +1 through the right one (no storage), none through the
+# top and the bottom; the tracer's -1 on the left (c_in = 1), and over the
+# two steps, the boundary's rates give the tracer that left as printed.
+outflow = {(float(r["time"]), int(r["id"])): r for r in rows
+           if r["kind"] == "boundary"}
+if sorted(outflow) != [(t, i) for t in (0.1, 0.2) for i in range(4)]:
+    fail(f"2d: boundary rows {sorted(outflow)}, expected ids 0-3 at t = "
+         "0.1 and 0.2")
+for (t, i), r in outflow.items():
+    fluid = {0: -1, 1: 1}.get(i, 0)
+    if not (abs(float(r["outflow"]) - fluid) <= 1e-8 and
+            (i != 0 or abs(float(r["tracer_outflow"]) + 1) <= 1e-8)):
+        fail(f"2d: boundary {i} at t = {t}: outflow {r['outflow']} "
+             f"(expected {fluid}), tracer {r['tracer_outflow']}")
+left = sum(0.1 * float(r["tracer_outflow"]) for r in outflow.values())
+print(f"2d: sides' outflow -1, 1, 0, 0; the tracer that left {left} "
+      f"(printed {amounts['outflow']})")
+if not close(left, amounts["outflow"], 1e-5):
+    fail("2d: the boundary rows do not give the tracer that left")
 
 if shutil.which("mpirun"):
     ranks = os.path.join(work, "2d-2-ranks")
@@ -120,7 +147,9 @@ directory, _ = run_scene(program, source, work, "3d",
                          "Output/Print timings=false", "Output/Write VTU=false",
                          "Time/End time=1e7")
 expected = {("region", "2"): 9e5, ("region", "3"): 1e5,
-            ("fracture", "0"): 100 * math.hypot(100, 60)}
+            ("fracture", "0"): 100 * math.hypot(100, 60),
+            ("boundary", "0"): 6e4 - 2e3, ("boundary", "1"): 1e3,
+            ("boundary", "2"): 1e3}
 found = {(r["kind"], r["id"]): float(r["measure"]) for r in read(directory)
          if float(r["time"]) == 1e7}
 if set(found) != set(expected):
@@ -129,5 +158,6 @@ for key, value in expected.items():
     if not close(found[key], value, 1e-9):
         fail(f"3d: {key} measures {found[key]}, not {value}")
 print("3d: region volumes 9e5 and 1e5, fracture area "
-      f"{expected[('fracture', '0')]:.6f}")
+      f"{expected[('fracture', '0')]:.6f}, boundary areas 58,000 and the "
+      "windows' 1,000")
 print("region_integrals: all checks passed")

@@ -60,6 +60,10 @@ namespace PolyFrac
     void
     print_run_summary(std::ostream &out) const override;
 
+    /** The outflows of the last step. */
+    std::vector<BoundaryOutflow>
+    boundary_outflows() const override;
+
     types::global_dof_index
     n_unknowns() const override
     {
@@ -109,6 +113,8 @@ namespace PolyFrac
     /** Its concentrations at the last time reached, and its amounts. */
     Vector<double> concentration;
     FluidVolumes   run_tracer;
+    /** What the last step let out through each boundary id. */
+    std::vector<BoundaryOutflow> last_outflows;
   };
 
 

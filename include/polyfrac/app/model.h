@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/io/vtu_writer.h>
+#include <polyfrac/physics/volume_balance.h>
 #include <polyfrac/postprocessing/error_evaluator.h>
 
 #include <istream>
@@ -171,6 +172,12 @@ namespace PolyFrac
     virtual Vector<float>
     error_indicators() const;
 
+    /** What the last step let out through each boundary id (the rates of
+     * the fluid and the tracer, Output/Region integrals); the default, for a
+     * model without flow or before its first step, is none. */
+    virtual std::vector<BoundaryOutflow>
+    boundary_outflows() const;
+
     /** The matrix output of the current state: one patch per deal.II cell. */
     virtual PatchData<dim, dim>
     matrix_output() const = 0;
@@ -194,6 +201,15 @@ namespace PolyFrac
   Model<dim>::level_start() const
   {
     return nullptr;
+  }
+
+
+
+  template <int dim>
+  inline std::vector<BoundaryOutflow>
+  Model<dim>::boundary_outflows() const
+  {
+    return {};
   }
 
 

@@ -110,6 +110,10 @@ namespace PolyFrac
     void
     print_run_summary(std::ostream &out) const override;
 
+    /** The outflows of the last step. */
+    std::vector<BoundaryOutflow>
+    boundary_outflows() const override;
+
     types::global_dof_index
     n_unknowns() const override;
 
@@ -381,6 +385,8 @@ namespace PolyFrac
     /** The fluid volumes of the steps so far, and the time of the last. */
     FluidVolumes run_volumes;
     double       time = 0;
+    /** What the last step let out through each boundary id. */
+    std::vector<BoundaryOutflow> last_outflows;
   };
 } // namespace PolyFrac
 

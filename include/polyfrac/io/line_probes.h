@@ -7,8 +7,10 @@
 
 #include <polyfrac/io/output_parameters.h>
 #include <polyfrac/io/vtu_writer.h>
+#include <polyfrac/physics/volume_balance.h>
 
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -122,26 +124,34 @@ namespace PolyFrac
    * sample_cell_data(); a region's row leaves the fracture columns empty,
    * a fracture's the matrix columns). The means are of the values written
    * to the VTU files (single precision). On several ranks the sums over
-   * the ranks' patches.
+   * the ranks' patches. After a step, one row per boundary id (kind
+   * `boundary`): its area (length in 2D) and, in the last two columns,
+   * `outflow` and `tracer_outflow`, the rates at which the step let the
+   * fluid and the tracer out through it (Model::boundary_outflows(); empty
+   * in the other rows).
    */
   template <int dim>
   class RegionIntegralSeries
   {
   public:
     /** The series of @p level in @p directory; @p polytope_regions: the
-     * region of each polytope, @p n_fractures: the fractures. */
+     * region of each polytope, @p n_fractures: the fractures,
+     * @p boundary_measures: the area of each boundary id. */
     RegionIntegralSeries(const std::string              &directory,
                          const unsigned int              level,
                          std::vector<types::material_id> polytope_regions,
                          const unsigned int              n_fractures,
+                         std::map<unsigned int, double>  boundary_measures,
                          const MPI_Comm                  communicator);
 
     /** Appends the means of the matrix output @p matrix and the fracture
-     * output @p fractures (null: none) at time @p t. */
+     * output @p fractures (null: none) at time @p t, and the @p outflows
+     * of the step that ended there. */
     void
-    write(const PatchData<dim, dim>     &matrix,
-          const PatchData<dim - 1, dim> *fractures,
-          const double                   t);
+    write(const PatchData<dim, dim>          &matrix,
+          const PatchData<dim - 1, dim>      *fractures,
+          const std::vector<BoundaryOutflow> &outflows,
+          const double                        t);
 
     /** Its file, regions-level-K.csv, and what it holds so far. */
     CsvSeries csv;
@@ -149,9 +159,10 @@ namespace PolyFrac
   private:
     const std::vector<types::material_id> polytope_regions;
     /** The regions of the mesh, sorted. */
-    std::vector<types::material_id> regions;
-    const unsigned int              n_fractures;
-    const MPI_Comm                  communicator;
+    std::vector<types::material_id>      regions;
+    const unsigned int                   n_fractures;
+    const std::map<unsigned int, double> boundary_measures;
+    const MPI_Comm                       communicator;
   };
 } // namespace PolyFrac
 
