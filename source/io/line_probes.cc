@@ -9,6 +9,7 @@
 #include <functional>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -43,14 +44,15 @@ namespace PolyFrac
               {0, 4, 6, 7}};
     }
 
-    /** Whether @p x lies in the simplex of corners @p c (k + 1 points in
-     * spacedim dimensions, k ≤ spacedim), within @p tolerance of the
-     * simplex's affine hull. */
+    /** The barycentric coordinates (k + 1 weights) in the simplex of
+     * corners @p c (k + 1 points in spacedim dimensions, k ≤ spacedim) of
+     * @p x if it lies in it, within @p tolerance of the simplex's affine
+     * hull; none otherwise. */
     template <int spacedim>
-    bool
-    in_simplex(const std::vector<Point<spacedim>> &c,
-               const Point<spacedim>              &x,
-               const double                        tolerance)
+    std::optional<std::vector<double>>
+    barycentric(const std::vector<Point<spacedim>> &c,
+                const Point<spacedim>              &x,
+                const double                        tolerance)
     {
       const unsigned int               k = c.size() - 1;
       std::vector<Tensor<1, spacedim>> edges;
@@ -69,15 +71,22 @@ namespace PolyFrac
       gram.vmult(lambda, rhs);
       Tensor<1, spacedim> offset = x - c[0];
       double              sum    = 0;
+      std::vector<double> weights(1);
       for (unsigned int i = 0; i < k; ++i)
         {
           if (lambda(i) < -1e-10)
-            return false;
+            return std::nullopt;
           sum += lambda(i);
           offset -= lambda(i) * edges[i];
+          weights.push_back(lambda(i));
         }
-      return sum <= 1 + 1e-10 && offset.norm() <= tolerance;
+      if (!(sum <= 1 + 1e-10 && offset.norm() <= tolerance))
+        return std::nullopt;
+      weights[0] = std::max(1 - sum, 0.);
+      return weights;
     }
+
+
 
     /** The corners of the simplices of a patch, its diameter and the
      * bounding box of its vertices: computed once per patch. */
@@ -85,8 +94,10 @@ namespace PolyFrac
     struct PatchShape
     {
       std::vector<std::vector<Point<spacedim>>> simplices;
-      double                                    diameter = 0;
-      Point<spacedim>                           lower, upper;
+      /** The patch's vertices (indices) of each simplex. */
+      std::vector<std::vector<unsigned int>> simplex_vertices;
+      double                                 diameter = 0;
+      Point<spacedim>                        lower, upper;
     };
 
     /** The PatchShape of @p patch. */
@@ -109,7 +120,8 @@ namespace PolyFrac
               std::max(shape.diameter,
                        patch.vertices[a].distance(patch.vertices[b]));
         }
-      for (const std::vector<unsigned int> &simplex : simplices(dim, n))
+      shape.simplex_vertices = simplices(dim, n);
+      for (const std::vector<unsigned int> &simplex : shape.simplex_vertices)
         {
           shape.simplices.emplace_back();
           for (const unsigned int v : simplex)
@@ -118,21 +130,46 @@ namespace PolyFrac
       return shape;
     }
 
-    /** Whether the patch of shape @p shape holds the point @p x. */
+    /** Where the patch of shape @p shape holds the point @p x: the
+     * patch's vertices of a simplex that holds it and its barycentric
+     * coordinates there; none if the patch does not hold it. */
     template <int spacedim>
-    bool
-    holds(const PatchShape<spacedim> &shape, const Point<spacedim> &x)
+    std::optional<std::pair<std::vector<unsigned int>, std::vector<double>>>
+    locate(const PatchShape<spacedim> &shape, const Point<spacedim> &x)
     {
       const double tolerance = 1e-8 * shape.diameter;
       for (unsigned int d = 0; d < spacedim; ++d)
         if (x[d] < shape.lower[d] - tolerance ||
             x[d] > shape.upper[d] + tolerance)
-          return false;
-      for (const auto &corners : shape.simplices)
-        if (in_simplex(corners, x, tolerance))
-          return true;
-      return false;
+          return std::nullopt;
+      for (unsigned int s = 0; s < shape.simplices.size(); ++s)
+        if (const auto weights = barycentric(shape.simplices[s], x, tolerance))
+          return std::make_pair(shape.simplex_vertices[s], *weights);
+      return std::nullopt;
     }
+
+
+
+    /** The columns of the point data vectors of @p data (the displacement:
+     * name_x, ...) into @p columns, and for each its component. */
+    template <int dim, int spacedim>
+    std::vector<unsigned int>
+    point_data_components(const PatchData<dim, spacedim> &data,
+                          std::vector<std::string>       &columns)
+    {
+      const std::string         axes = "xyz";
+      std::vector<unsigned int> components;
+      for (const auto &[first, last, name, kind] : data.ranges)
+        if (kind == DataComponentInterpretation::component_is_part_of_vector)
+          for (unsigned int c = first; c <= last; ++c)
+            {
+              columns.push_back(name + "_" + axes[c - first]);
+              components.push_back(c);
+            }
+      return components;
+    }
+
+
 
     /** The columns of the cell arrays of @p data (a scalar's name, a
      * vector's first spacedim components name_x, ..., a tensor's spacedim ×
@@ -248,31 +285,41 @@ namespace PolyFrac
 
   template <int dim, int spacedim>
   std::vector<std::vector<double>>
-  sample_cell_data(const PatchData<dim, spacedim>     &data,
-                   const std::vector<Point<spacedim>> &points,
-                   std::vector<std::string>           &columns,
-                   const MPI_Comm                      communicator)
+  sample_patch_data(const PatchData<dim, spacedim>     &data,
+                    const std::vector<Point<spacedim>> &points,
+                    std::vector<std::string>           &columns,
+                    const MPI_Comm                      communicator)
   {
-    const auto components = cell_data_components(data, columns);
+    const auto         components       = cell_data_components(data, columns);
+    const auto         point_components = point_data_components(data, columns);
+    const unsigned int n_columns        = columns.size();
 
     const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    std::vector<unsigned int> owner(points.size(), n_ranks);
-    std::vector<double>       values(points.size() * components.size(), 0.);
+    std::vector<unsigned int>         owner(points.size(), n_ranks);
+    std::vector<double>               values(points.size() * n_columns, 0.);
     std::vector<PatchShape<spacedim>> shapes;
     for (const auto &patch : data.patches)
       shapes.push_back(shape_of(patch));
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int p = 0; p < data.patches.size(); ++p)
-        if (holds(shapes[p], points[i]))
+        if (const auto where = locate(shapes[p], points[i]))
           {
-            owner[i] = rank;
+            owner[i]    = rank;
+            double *row = &values[i * n_columns];
             for (unsigned int c = 0; c < components.size(); ++c)
               {
                 const auto &array = data.cell_arrays[components[c].first];
-                values[i * components.size() + c] =
+                row[c] =
                   array.values[p * array.n_components + components[c].second];
               }
+            // Point data: linear in the simplex that holds the point.
+            const auto &[corners, weights] = *where;
+            for (unsigned int c = 0; c < point_components.size(); ++c)
+              for (unsigned int v = 0; v < corners.size(); ++v)
+                row[components.size() + c] +=
+                  weights[v] *
+                  data.patches[p].data(point_components[c], corners[v]);
             break;
           }
     std::vector<unsigned int> first(points.size());
@@ -281,18 +328,18 @@ namespace PolyFrac
                         ArrayView<unsigned int>(first));
     for (unsigned int i = 0; i < points.size(); ++i)
       if (first[i] != rank)
-        for (unsigned int c = 0; c < components.size(); ++c)
-          values[i * components.size() + c] = 0;
+        for (unsigned int c = 0; c < n_columns; ++c)
+          values[i * n_columns + c] = 0;
     Utilities::MPI::sum(ArrayView<const double>(values),
                         communicator,
                         ArrayView<double>(values));
 
     std::vector<std::vector<double>> rows(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int c = 0; c < components.size(); ++c)
+      for (unsigned int c = 0; c < n_columns; ++c)
         rows[i].push_back(first[i] == n_ranks ?
                             std::numeric_limits<double>::quiet_NaN() :
-                            values[i * components.size() + c]);
+                            values[i * n_columns + c]);
     return rows;
   }
 
@@ -328,11 +375,11 @@ namespace PolyFrac
   {
     std::vector<std::string>         columns, fracture_columns;
     std::vector<std::vector<double>> rows =
-      sample_cell_data(matrix, points, columns, communicator);
+      sample_patch_data(matrix, points, columns, communicator);
     if (fractures != nullptr)
       {
         const auto on_fractures =
-          sample_cell_data(*fractures, points, fracture_columns, communicator);
+          sample_patch_data(*fractures, points, fracture_columns, communicator);
         for (unsigned int i = 0; i < rows.size(); ++i)
           rows[i].insert(rows[i].end(),
                          on_fractures[i].begin(),
@@ -510,25 +557,25 @@ namespace PolyFrac
 
 
   template std::vector<std::vector<double>>
-  sample_cell_data(const PatchData<2, 2> &,
-                   const std::vector<Point<2>> &,
-                   std::vector<std::string> &,
-                   const MPI_Comm);
+  sample_patch_data(const PatchData<2, 2> &,
+                    const std::vector<Point<2>> &,
+                    std::vector<std::string> &,
+                    const MPI_Comm);
   template std::vector<std::vector<double>>
-  sample_cell_data(const PatchData<1, 2> &,
-                   const std::vector<Point<2>> &,
-                   std::vector<std::string> &,
-                   const MPI_Comm);
+  sample_patch_data(const PatchData<1, 2> &,
+                    const std::vector<Point<2>> &,
+                    std::vector<std::string> &,
+                    const MPI_Comm);
   template std::vector<std::vector<double>>
-  sample_cell_data(const PatchData<3, 3> &,
-                   const std::vector<Point<3>> &,
-                   std::vector<std::string> &,
-                   const MPI_Comm);
+  sample_patch_data(const PatchData<3, 3> &,
+                    const std::vector<Point<3>> &,
+                    std::vector<std::string> &,
+                    const MPI_Comm);
   template std::vector<std::vector<double>>
-  sample_cell_data(const PatchData<2, 3> &,
-                   const std::vector<Point<3>> &,
-                   std::vector<std::string> &,
-                   const MPI_Comm);
+  sample_patch_data(const PatchData<2, 3> &,
+                    const std::vector<Point<3>> &,
+                    std::vector<std::string> &,
+                    const MPI_Comm);
   template class LineProbeSeries<2>;
   template class LineProbeSeries<3>;
   template class RegionIntegralSeries<2>;

@@ -50,7 +50,8 @@ namespace PolyFrac
       Patterns::Anything(),
       "Lines along which the fields constant over a cell (pressure, "
       "stresses, Darcy velocity, porosity; on the fractures their pressure, "
-      "aperture, jumps and tractions) are sampled at every output time: "
+      "aperture, jumps and tractions) and the displacement (linear over a "
+      "cell's simplices) are sampled at every output time: "
       "<NAME: x0, y0[, z0] : x1, y1[, z1] : N; ...>, N >= 2 points evenly "
       "spaced from the first point to the second, both included. Each line "
       "is written to line-NAME-level-K.csv (columns time, arc_length, x, "

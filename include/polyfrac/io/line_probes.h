@@ -19,22 +19,24 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
-   * The cell data of the patches @p data (PatchData::cell_arrays: the
-   * fields constant over a cell or a fracture face) at the points
-   * @p points: one row per point, one column per component (the names in
-   * @p columns: a scalar's name, a vector's name_x, _y, _z, a tensor's
-   * name_xx, _xy, ...), NaN where no patch holds the point. A patch holds
-   * a point if the point lies in it, or for patches of lower dimension
-   * (fracture faces) within 1e-8 of its diameter from it; the first patch
-   * found wins. On several ranks the values of the lowest rank that holds
-   * a point, on every rank.
+   * The data of the patches @p data at the points @p points: the cell data
+   * (PatchData::cell_arrays: the fields constant over a cell or a fracture
+   * face) and then the point data vectors (the displacement), linear in
+   * the simplex of the patch's split into simplices that holds the point.
+   * One row per point, one column per component (the names in @p columns:
+   * a scalar's name, a vector's name_x, _y, _z, a tensor's name_xx, _xy,
+   * ...), NaN where no patch holds the point. A patch holds a point if the
+   * point lies in it, or for patches of lower dimension (fracture faces)
+   * within 1e-8 of its diameter from it; the first patch found wins. On
+   * several ranks the values of the lowest rank that holds a point, on
+   * every rank.
    */
   template <int dim, int spacedim>
   std::vector<std::vector<double>>
-  sample_cell_data(const PatchData<dim, spacedim>     &data,
-                   const std::vector<Point<spacedim>> &points,
-                   std::vector<std::string>           &columns,
-                   const MPI_Comm                      communicator);
+  sample_patch_data(const PatchData<dim, spacedim>     &data,
+                    const std::vector<Point<spacedim>> &points,
+                    std::vector<std::string>           &columns,
+                    const MPI_Comm                      communicator);
 
   /**
    * A CSV file written piece by piece over the output times of a level, by
@@ -83,7 +85,7 @@ namespace PolyFrac
   /**
    * One line of Output/Line probes over the output times of a level:
    * line-NAME-level-K.csv with the columns time, arc_length, x, y[, z], the
-   * matrix fields and the fracture fields (sample_cell_data()), one row per
+   * matrix fields and the fracture fields (sample_patch_data()), one row per
    * point and output time. Written by the root rank; its text is kept so
    * that a checkpoint can restore it (save(), load()).
    */
@@ -121,7 +123,7 @@ namespace PolyFrac
    * its index): its measure (volume, or fracture area; in 2D area and
    * length per unit thickness) and the mean over it of every component of
    * the cell data of the solution and fracture outputs (the columns of
-   * sample_cell_data(); a region's row leaves the fracture columns empty,
+   * sample_patch_data(); a region's row leaves the fracture columns empty,
    * a fracture's the matrix columns). The means are of the values written
    * to the VTU files (single precision). On several ranks the sums over
    * the ranks' patches. After a step, one row per boundary id (kind
