@@ -20,6 +20,11 @@
    fracture the area 100 * sqrt(100^2 + 60^2), the inflow and outflow
    windows (boundary ids 1, 2) 1,000 each and the rest of the boundary
    58,000, to 1e-9.
+3. Poromechanics, prm/b4-terzaghi.prm (the column drained at its top, id
+   3): after each step the fluid leaves through the top only (the other
+   sides' rates below 1e-12 of the top's), at a rate that falls from one
+   step to the next (consolidation slows down), and the rates times the
+   steps give the outflow the run prints (to 1e-5).
 
 usage: region_integrals.py POLYFRAC SOURCE_DIR WORK_DIR
 Exits non-zero on the first failed check.
@@ -160,4 +165,28 @@ for key, value in expected.items():
 print("3d: region volumes 9e5 and 1e5, fracture area "
       f"{expected[('fracture', '0')]:.6f}, boundary areas 58,000 and the "
       "windows' 1,000")
+
+directory, output = run_scene(program, source, work, "poromechanics",
+                              "b4-terzaghi.prm", "Output/Region integrals=true",
+                              "Output/Write VTU=false",
+                              "Output/Print timings=false")
+steps = {0.15: 0.15, 0.3: 0.15}
+top = []
+for t, step in steps.items():
+    rates = {int(r["id"]): float(r["outflow"]) for r in read(directory)
+             if r["kind"] == "boundary" and float(r["time"]) == t}
+    if sorted(rates) != [0, 1, 2, 3]:
+        fail(f"poromechanics: boundary rows {sorted(rates)} at t = {t}")
+    if not (rates[3] > 0 and all(abs(rates[i]) <= 1e-12 * rates[3]
+                                 for i in range(3))):
+        fail(f"poromechanics: rates {rates} at t = {t}: the fluid should "
+             "leave through the top (id 3) only")
+    top.append(rates[3] * step)
+if not top[1] < top[0]:
+    fail(f"poromechanics: the top's outflow per step {top} does not fall")
+printed = balance("poromechanics", output, "Fluid volumes")["outflow"]
+print(f"poromechanics: out through the top {top[0]:.6g}, {top[1]:.6g} "
+      f"(sum {sum(top):.6g}, printed {printed}), the other sides none")
+if not close(sum(top), printed, 1e-5):
+    fail("poromechanics: the boundary rows do not give the outflow printed")
 print("region_integrals: all checks passed")
