@@ -1,5 +1,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <polyfrac/app/poromechanical_newton.h>
 #include <polyfrac/base/exception_message.h>
@@ -67,7 +68,9 @@ namespace PolyFrac
     const Flow<dim>                &flow,
     const BiotCoupling<dim>        &coupling,
     const FaceBubbles<dim>         *bubbles,
-    ContactMechanics<dim>          &contact)
+    ContactMechanics<dim>          &contact,
+    const std::vector<double>      &fixed_stress_coefficients,
+    const std::vector<double>      &fracture_compliance)
     : prm(prm)
     , discretization(discretization)
     , dofs(*discretization.dofs)
@@ -80,16 +83,15 @@ namespace PolyFrac
     , n_lambda(dim * dofs.n_bubbles())
     , n_s(bubbles ? bubbles->n_bubbles() : 0)
     , n_p(pressure_dofs.n_dofs())
+    , fixed_stress_coefficients(fixed_stress_coefficients)
+    , fracture_compliance(fracture_compliance)
+    , preconditioner(prm.solver.method == SolverMethod::amg ?
+                       std::make_unique<FixedStressPreconditioner>() :
+                       nullptr)
   {
     AssertThrow(bubbles == nullptr || !dofs.is_distributed(),
                 ExcInternalError()); // BiotSystem refuses them
     make_pattern();
-    // Every rank factorises the whole summed Jacobian by itself: MUMPS on
-    // several processes is not reproducible from run to run (its dynamic
-    // scheduling: two runs of the slip scene on 2 ranks took 3 and 4
-    // Newton iterations in the same step), and a resumed run must end
-    // with the bits of an uninterrupted one.
-    all_rows = complete_index_set(n_dofs());
     // The cell pressures whose couplings this rank adds (its cells').
     own_cell_pressure.assign(n_p, false);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
@@ -327,7 +329,8 @@ namespace PolyFrac
     std::copy(x.begin() + p0, x.end(), p.begin());
     const std::vector<double> p_m = flow.cell_pressures(p);
     residual.reinit(n_dofs());
-    jacobian = 0;
+    jacobian        = 0;
+    jacobian_scaled = false;
 
     // Bubbles: A_su u + A_ss s − F_s − b D_sᵀ p_m; their pull A_us s joins
     // the pressure load of the momentum rows.
@@ -441,59 +444,80 @@ namespace PolyFrac
 
   template <int dim>
   void
-  PoromechanicalNewton<dim>::factorise()
+  PoromechanicalNewton<dim>::factorise(const ContactStates &states)
   {
     // The symmetric diagonal scaling of BiotSystem (unit diagonals where
     // there is one; a row without, the multipliers of faces in contact,
-    // is scaled by its largest entry).
-    scaling.reinit(n_dofs());
-    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+    // is scaled by its largest entry). A Jacobian that solve() has scaled
+    // already (FGMRES failed with an older preconditioner) keeps its
+    // scaling.
+    if (!jacobian_scaled)
       {
-        double size = std::abs(jacobian.diag_element(i));
-        if (size == 0)
-          for (auto entry = jacobian.begin(i); entry != jacobian.end(i);
-               ++entry)
-            size = std::max(size, std::abs(entry->value()));
-        scaling(i) = size > 0 ? 1 / std::sqrt(size) : 1.;
+        scaling.reinit(n_dofs());
+        for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+          {
+            double size = std::abs(jacobian.diag_element(i));
+            if (size == 0)
+              for (auto entry = jacobian.begin(i); entry != jacobian.end(i);
+                   ++entry)
+                size = std::max(size, std::abs(entry->value()));
+            scaling(i) = size > 0 ? 1 / std::sqrt(size) : 1.;
+          }
+        scale_jacobian();
       }
+    krylov_iterations.clear();
+    const bool regular =
+      preconditioner ?
+        preconditioner->initialize(jacobian,
+                                   n_u + n_lambda + n_s,
+                                   fixed_stress_diagonal(states)) :
+        direct.factorise(jacobian);
+    AssertThrow(regular,
+                ExcMessage(BiotSystem<dim>::singular_message(
+                  preconditioner ?
+                    "displacement, multipliers, face bubbles (the "
+                    "mechanics block of the preconditioner)" :
+                    "displacement, multipliers, face bubbles, pressures")));
+  }
+
+
+
+  template <int dim>
+  void
+  PoromechanicalNewton<dim>::scale_jacobian()
+  {
+    if (jacobian_scaled)
+      return;
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
         entry->value() *= scaling(i) * scaling(entry->column());
-    // MUMPS (nested-dissection ordering) factorises B6's Jacobian about six
-    // times faster than UMFPACK (benchmarks/README.md, "Measured choices in the
-    // code"). MUMPS may fail where UMFPACK does not: its workspace, estimated
-    // before the pivots, can be too small once delayed pivots fill in more
-    // (INFO(1) = −9, met on B6); UMFPACK then factorises this Jacobian. The
-    // solver refers to the matrix it factorised: it goes first.
-    direct.reset();
-    fallback.reset();
-    factorised_jacobian.clear();
-    factorised_jacobian.reinit(
-      all_rows, all_rows, jacobian, MPI_COMM_SELF, 0., true, &sparsity);
-    direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-      direct_control,
-      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
-    try
-      {
-        direct->initialize(factorised_jacobian);
-        return;
-      }
-    catch (const std::exception &)
-      {
-        direct.reset();
-      }
-    fallback = std::make_unique<SparseDirectUMFPACK>();
-    try
-      {
-        fallback->initialize(jacobian);
-      }
-    catch (const std::exception &)
-      {
-        fallback.reset();
-        AssertThrow(false,
-                    ExcMessage(BiotSystem<dim>::singular_message(
-                      "displacement, multipliers, face bubbles, pressures")));
-      }
+    jacobian_scaled = true;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  PoromechanicalNewton<dim>::fixed_stress_diagonal(
+    const ContactStates &states) const
+  {
+    // The mass rows are scaled by −Δt (BiotSystem): a storage c enters the
+    // diagonal as −|K| c, the fixed-stress term L = b²/K_dr as −|K| L.
+    const types::global_dof_index p0 = n_u + n_lambda + n_s;
+    Vector<double>                F(n_p);
+    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
+      F(pressure_dofs.cell_dof(c)) = discretization.geometry->cells[c].measure *
+                                     fixed_stress_coefficients[c];
+    // A face in contact keeps its normal jump whatever its pressure.
+    for (unsigned int i = 0; i < dofs.n_bubbles(); ++i)
+      if (states.normal.empty() || states.normal[i] == NormalState::open)
+        F(pressure_dofs.fracture_face_dof(i)) =
+          fracture_face_measure(i) * fracture_compliance[i];
+    for (const auto &line : pressure_constraints.get_lines())
+      F(line.index) = 0;
+    for (types::global_dof_index k = 0; k < n_p; ++k)
+      F(k) *= scaling(p0 + k) * scaling(p0 + k);
+    return F;
   }
 
 
@@ -528,24 +552,58 @@ namespace PolyFrac
 
 
   template <int dim>
-  Vector<double>
-  PoromechanicalNewton<dim>::solve(const Vector<double> &residual) const
+  bool
+  PoromechanicalNewton<dim>::solve(const Vector<double> &residual,
+                                   Vector<double>       &dx,
+                                   Result               &result)
   {
     Vector<double> rhs(residual);
     rhs *= -1.;
     rhs.scale(scaling);
-    Vector<double> dx(n_dofs());
-    if (direct)
-      dx = solve_on_owned_rows(all_rows,
-                               MPI_COMM_SELF,
-                               rhs,
-                               [&](auto &x, const auto &b) {
-                                 direct->solve(x, b);
-                               });
+    dx.reinit(n_dofs());
+    if (preconditioner)
+      {
+        // Inexact Newton: the step is solved to the forcing term η relative
+        // to the residual, so that the iteration contracts by about η once
+        // the contact states settle.
+        scale_jacobian();
+        SolverControl                control(prm.solver.max_iterations,
+                              std::max(prm.solver.tolerance,
+                                       prm.nonlinear.forcing_term) *
+                                rhs.l2_norm());
+        SolverFGMRES<Vector<double>> fgmres(
+          control, SolverFGMRES<Vector<double>>::AdditionalData(100));
+        bool converged = true;
+        try
+          {
+            fgmres.solve(jacobian, dx, rhs, *preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            converged = false;
+          }
+        result.krylov_iterations =
+          result.krylov_iterations.value_or(0) + control.last_step();
+        krylov_iterations.push_back(control.last_step());
+        if (!converged)
+          return false;
+      }
     else
-      fallback->vmult(dx, rhs);
+      direct.solve(dx, rhs);
     dx.scale(scaling);
-    return dx;
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  PoromechanicalNewton<dim>::preconditioner_worn() const
+  {
+    // Twice the iterations it needed when it was new, and some slack for
+    // the small counts of a well-conditioned step.
+    return krylov_iterations.size() >= 2 &&
+           krylov_iterations.back() > 2 * krylov_iterations.front() + 10;
   }
 
 
@@ -657,18 +715,37 @@ namespace PolyFrac
           }
         // A step with the states of the last factorisation reuses it (a
         // chord step) while the iteration contracts: the Jacobian then
-        // changes only through the apertures and slip directions.
-        const std::size_t n     = increments.size();
-        const bool        reuse = n >= 2 && same(states, factorised_states) &&
-                           increments[n - 1] <= contraction * increments[n - 2];
-        if (!reuse)
+        // changes only through the apertures and slip directions. FGMRES
+        // solves the Jacobian of the iterate itself: it keeps its
+        // preconditioner while the states stay and it works
+        // (preconditioner_worn()).
+        const std::size_t n           = increments.size();
+        const bool        same_states = same(states, factorised_states);
+        const bool        refresh =
+          preconditioner ?
+                   !same_states || preconditioner_worn() :
+                   !(n >= 2 && same_states &&
+              increments[n - 1] <= contraction * increments[n - 2]);
+        if (refresh)
           {
-            factorise();
+            factorise(states);
             factorised_states = states;
             ++result.factorisations;
           }
-        Vector<double> dx = solve(residual);
-        states            = line_search(x, dx, start, data, residual);
+        Vector<double> dx;
+        if (!solve(residual, dx, result))
+          {
+            // The iterate has moved too far from the preconditioner's.
+            factorise(states);
+            ++result.factorisations;
+            AssertThrow(solve(residual, dx, result),
+                        ExcMessage("FGMRES with the fixed-stress "
+                                   "preconditioner did not reach Linear "
+                                   "solver/Tolerance (or the forcing term) "
+                                   "within Linear solver/Maximum "
+                                   "iterations"));
+          }
+        states = line_search(x, dx, start, data, residual);
         const double increment =
           relative_increment(dx, x, displacement_floor, pressure_floor);
         // Converged when the step was taken with settled states, or when a

@@ -62,6 +62,18 @@ namespace PolyFrac
     {
       return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
     }
+
+    /** How the monolithic Newton step of @p result solved its linear
+     * systems: factorisations, or preconditioners and FGMRES iterations. */
+    template <int dim>
+    std::string
+    linear_solves(const typename PoromechanicalNewton<dim>::Result &result)
+    {
+      if (!result.krylov_iterations)
+        return count(result.factorisations, "factorisation");
+      return count(result.factorisations, "preconditioner") + ", " +
+             count(*result.krylov_iterations, "FGMRES iteration");
+    }
   } // namespace
 
 
@@ -160,13 +172,16 @@ namespace PolyFrac
                                                   *discretization.dofs);
         fracture_relaxation = fracture_compliance();
         if (monolithic)
-          newton = std::make_unique<PoromechanicalNewton<dim>>(prm,
-                                                               discretization,
-                                                               pressure_dofs,
-                                                               flow,
-                                                               coupling,
-                                                               bubbles.get(),
-                                                               *contact);
+          newton = std::make_unique<PoromechanicalNewton<dim>>(
+            prm,
+            discretization,
+            pressure_dofs,
+            flow,
+            coupling,
+            bubbles.get(),
+            *contact,
+            fixed_stress_coefficients,
+            fracture_relaxation);
       }
   }
 
@@ -190,9 +205,10 @@ namespace PolyFrac
                            "is not available " +
                            obstacle +
                            " yet: set it to fixed-stress or automatic."));
-    // With fractures the Newton step is solved by a direct solver only
-    // (MUMPS, benchmarks/README.md, "Measured choices in the code"), so Linear
-    // solver/Method = AMG keeps the fixed-stress split (doc/scheme.md §10).
+    // With fractures and Linear solver/Method = AMG the fixed-stress split
+    // is faster than the Newton solved by FGMRES, and finishes steps the
+    // Newton does not (B6: benchmarks/README.md, "Measured choices in the
+    // code"), so automatic keeps it (doc/scheme.md §10).
     return scheme == Scheme::monolithic ||
            (scheme == Scheme::automatic && obstacle.empty() &&
             (!fractured || prm.solver.method == SolverMethod::direct));
@@ -688,7 +704,7 @@ namespace PolyFrac
     report.coupling_increments = result.increments;
     summarise_fractures(report);
     out << "Step 0, equilibrium at t = 0: monolithic ("
-        << count(result.factorisations, "factorisation") << ")";
+        << linear_solves<dim>(result) << ")";
     print_contact_summary(report, out);
     return report;
   }
@@ -954,7 +970,7 @@ namespace PolyFrac
     pressure = p_new;
     summarise_fractures(report);
     out << "Step to t = " << t_new << ": monolithic ("
-        << count(result.factorisations, "factorisation") << ")";
+        << linear_solves<dim>(result) << ")";
     print_contact_summary(report, out);
     return report;
   }

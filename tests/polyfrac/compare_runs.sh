@@ -14,6 +14,8 @@
 #   cheaper=COLUMN       B's last level has a smaller error COLUMN than A's
 #                        last level with fewer unknowns (e.g. B refines
 #                        where the error is, A everywhere).
+# CHECK@TEXT also asks that B's output contain TEXT (that B took the path
+# the comparison is about, e.g. "FGMRES iteration").
 # Exits non-zero, printing both tables, when the check fails.
 #
 # usage: compare_runs.sh POLYFRAC WORKDIR CHECK FILE.prm [--set A=B ...]
@@ -21,6 +23,10 @@
 set -euo pipefail
 polyfrac=$1 workdir=$2 check=$3 prm=$4
 shift 4
+expected_text=
+if [[ $check == *@* ]]; then
+  expected_text=${check#*@} check=${check%%@*}
+fi
 common=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do common+=("$1"); shift; done
 [ $# -gt 0 ] && shift
@@ -39,6 +45,11 @@ run() {
 }
 run a
 run b "$@"
+if [ -n "$expected_text" ] && ! grep -q "$expected_text" "$workdir/b.log"; then
+  cat "$workdir/b.log"
+  echo "B's output does not contain '$expected_text'"
+  exit 1
+fi
 a=$workdir/a.csv b=$workdir/b.csv
 fail() {
   echo "$1"

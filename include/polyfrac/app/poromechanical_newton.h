@@ -1,12 +1,8 @@
 #ifndef polyfrac_app_poromechanical_newton_h
 #define polyfrac_app_poromechanical_newton_h
 
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/trilinos_solver.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <polyfrac/app/parameters.h>
@@ -15,11 +11,14 @@
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/physics/biot_coupling.h>
+#include <polyfrac/physics/direct_factorisation.h>
 #include <polyfrac/physics/face_bubbles.h>
+#include <polyfrac/physics/fixed_stress_preconditioner.h>
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/mechanical_state.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,18 +49,20 @@ namespace PolyFrac
    * D_s, J, and the aperture in the fracture volume, the cubic law and the
    * fracture storage (Flow::aperture_derivative(),
    * ApertureLaw::derivatives()), so that the iteration converges
-   * quadratically once the contact states settle; it is solved by MUMPS
-   * (Trilinos' Amesos) after the symmetric diagonal scaling of
-   * BiotSystem. The iteration stops when the contact states did not
-   * change (or, for faces at the Coulomb
-   * bound that flip between stick and slip, in the second iteration in a
-   * row within the tolerance) and the relative increments of
-   * (u, s) and of (p, λ) are at most Nonlinear solver/Coupling tolerance,
-   * each relative to the larger of the unknowns and the floors the caller
-   * gives (the scale of the loads, so that a state at rest is converged at
-   * once). Where the contact states cycle (states met before come back) or
-   * the increments stagnate (none smaller in 4 iterations), the
-   * complementarity parameters are divided by 10, as in
+   * quadratically once the contact states settle; after the symmetric
+   * diagonal scaling of BiotSystem it is solved by MUMPS (Trilinos'
+   * Amesos; DirectFactorisation) or, with Linear solver/Method = AMG, by
+   * FGMRES preconditioned with the fixed-stress block preconditioner
+   * (FixedStressPreconditioner: AMG on the pressures with the fixed-stress
+   * diagonal, MUMPS on the mechanics block). The iteration stops when the
+   * contact states did not change (or, for faces at the Coulomb bound that flip
+   * between stick and slip, in the second iteration in a row within the
+   * tolerance) and the relative increments of (u, s) and of (p, λ) are at most
+   * Nonlinear solver/Coupling tolerance, each relative to the larger of the
+   * unknowns and the floors the caller gives (the scale of the loads, so that a
+   * state at rest is converged at once). Where the contact states cycle (states
+   * met before come back) or the increments stagnate (none smaller in 4
+   * iterations), the complementarity parameters are divided by 10, as in
    * ContactMechanics::newton(), at most three times. Every step is damped
    * where the full step would make the residual larger (line_search()). On
    * several ranks (without face bubbles, which are not distributed) every rank
@@ -79,14 +80,19 @@ namespace PolyFrac
   public:
     /** All arguments must outlive this object; @p bubbles may be null (no
      * face bubbles: the nodal pair, with the pressure stabilisation in the
-     * step's FlowStepData). */
+     * step's FlowStepData). The iterative solver's fixed-stress diagonal:
+     * @p fixed_stress_coefficients, b²/K_dr per cell, and
+     * @p fracture_compliance, the opening per unit pressure of each
+     * fracture face (those of the fixed-stress split). */
     PoromechanicalNewton(const Parameters               &prm,
                          const LevelDiscretization<dim> &discretization,
                          const PressureDoFMap<dim>      &pressure_dofs,
                          const Flow<dim>                &flow,
                          const BiotCoupling<dim>        &coupling,
                          const FaceBubbles<dim>         *bubbles,
-                         ContactMechanics<dim>          &contact);
+                         ContactMechanics<dim>          &contact,
+                         const std::vector<double> &fixed_stress_coefficients,
+                         const std::vector<double> &fracture_compliance);
 
     /** What a step did. */
     struct Result
@@ -95,9 +101,12 @@ namespace PolyFrac
       bool converged = false;
       /** Newton iterations (each one linear solve). */
       unsigned int iterations = 0;
-      /** Factorisations of the Jacobian among them (the others reused the
-       * last one: see step()). */
+      /** Factorisations of the Jacobian among them, or set-ups of the
+       * preconditioner (the others reused the last one: see step()). */
       unsigned int factorisations = 0;
+      /** The FGMRES iterations of the iterative solver (none with the
+       * direct one). */
+      std::optional<unsigned int> krylov_iterations;
       /** How often the iteration divided the complementarity parameters
        * by 10 (ContactMechanics::reduce_complementarity_parameter()). */
       unsigned int beta_reductions = 0;
@@ -295,14 +304,35 @@ namespace PolyFrac
     std::vector<double>
     volume_changes(const Vector<double> &u, const Vector<double> &s) const;
 
-    /** Factorises #jacobian (scaled; MUMPS, or UMFPACK where MUMPS
-     * fails) for solve(). */
+    /** Scales #jacobian symmetrically (a new #scaling, unless solve()
+     * has scaled it already) and factorises it
+     * (DirectFactorisation) or builds the #preconditioner for it, with the
+     * fixed-stress diagonal of the contact states @p states. */
     void
-    factorise();
+    factorise(const ContactStates &states);
 
-    /** Solves J dx = −@p residual with the J of the last factorise(). */
+    /** Scales #jacobian by #scaling if linearise() has changed it since. */
+    void
+    scale_jacobian();
+
+    /** The fixed-stress diagonal of FixedStressPreconditioner, scaled: |K|
+     * b²/K_dr per cell, |σ| a_σ per fracture face open in @p states, none
+     * on the prescribed pressures. */
     Vector<double>
-    solve(const Vector<double> &residual) const;
+    fixed_stress_diagonal(const ContactStates &states) const;
+
+    /** The Newton step @p dx: J dx = −@p residual, with the J of the
+     * last factorise() (direct) or the J of the last linearise() (FGMRES,
+     * its iterations added to @p result). False if FGMRES did not reach
+     * its tolerance. */
+    bool
+    solve(const Vector<double> &residual, Vector<double> &dx, Result &result);
+
+    /** Whether the last FGMRES solve took more than twice the iterations
+     * (plus 10) of the first one with the preconditioner: it is then built
+     * again for the current Jacobian. */
+    bool
+    preconditioner_worn() const;
 
     /** The unknowns (u, λ, s, p) of a state. */
     Vector<double>
@@ -325,22 +355,28 @@ namespace PolyFrac
     SparseMatrix<double> flow_matrix;
     /** The prescribed pressures of the step (offset to x). */
     AffineConstraints<double> pressure_constraints;
-    /** All rows: every rank factorises the whole Jacobian (MPI_COMM_SELF),
-     * so that a run is reproducible on several ranks. */
-    IndexSet all_rows;
     /** Whether this rank adds the couplings of a cell pressure (its
      * cell's), by pressure dof. */
     std::vector<bool> own_cell_pressure;
-    /** The symmetric diagonal scaling of the last factorise(). */
+    /** b²/K_dr per cell and the fracture faces' compliance. */
+    const std::vector<double> &fixed_stress_coefficients;
+    const std::vector<double> &fracture_compliance;
+    /** The symmetric diagonal scaling of the last factorise(), and whether
+     * #jacobian is scaled by it. */
     Vector<double> scaling;
-    /** The scaled Jacobian of the last factorise(), and its MUMPS
-     * factorisation. */
-    TrilinosWrappers::SparseMatrix                  factorised_jacobian;
-    SolverControl                                   direct_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
-    /** UMFPACK's factorisation of the last factorise() where MUMPS failed
-     * (else null). */
-    std::unique_ptr<SparseDirectUMFPACK> fallback;
+    bool           jacobian_scaled = false;
+    /** The factorisation of the last factorise() (direct solver). Every
+     * rank factorises the whole summed Jacobian by itself: MUMPS on
+     * several processes is not reproducible from run to run (its dynamic
+     * scheduling: two runs of the slip scene on 2 ranks took 3 and 4
+     * Newton iterations in the same step), and a resumed run must end with
+     * the bits of an uninterrupted one. */
+    DirectFactorisation direct;
+    /** The preconditioner of the last factorise() (Linear solver/Method =
+     * AMG; else null). */
+    std::unique_ptr<FixedStressPreconditioner> preconditioner;
+    /** The FGMRES iterations of each solve with it. */
+    std::vector<unsigned int> krylov_iterations;
   };
 } // namespace PolyFrac
 
