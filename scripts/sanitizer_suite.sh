@@ -39,6 +39,13 @@ long_tests=(
   # poromechanics_2d_slip.
   polyfrac/default_scene
   polyfrac/equal_runs_default_scene_newton
+  # Added 2026-11-28: the monolithic Newton by FGMRES (Release 3.7 s for the
+  # default scene, 24 s for the slip scene on three levels); FGMRES and the
+  # fixed-stress preconditioner stay in the Debug suite through
+  # equal_runs_poromechanics_newton_fgmres (the slip scene, twice).
+  polyfrac/equal_runs_default_scene_newton_fgmres
+  polyfrac/fixed_stress_preconditioner
+  parallel/poromechanics_2d_slip_2_ranks_newton_fgmres
   # Release 2.5 s: the slip scene's step 0 and step 1 four times; the
   # equilibrium start stays in Debug through poromechanics_2d_slip.
   app/equilibrium_start_01
