@@ -1,5 +1,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/fixed_stress_preconditioner.h>
 
 namespace PolyFrac
@@ -73,11 +74,7 @@ namespace PolyFrac
     if (diagonal_schur)
       return mechanics_solver.factorise(mechanics);
     trilinos_schur.reinit(schur);
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    amg_data.elliptic = true;
-    // As Flow's CG + AMG on the same operator (flow.cc).
-    amg_data.aggregation_threshold = 0.1;
-    amg.initialize(trilinos_schur, amg_data);
+    initialize_pressure_amg(amg, trilinos_schur);
     return mechanics_solver.factorise(mechanics);
   }
 

@@ -774,14 +774,8 @@ namespace PolyFrac
                       const VectorType                     &rhs,
                       VectorType                           &pressure) const
   {
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    amg_data.elliptic = true;
-    // Coarser aggregates than ML's default (threshold 1e-4): on the B6
-    // network (cells, faces and fracture unknowns together) CG needs 735
-    // iterations over 20 solves instead of 1,834.
-    amg_data.aggregation_threshold = 0.1;
-    amg.initialize(matrix, amg_data);
+    TrilinosWrappers::PreconditionAMG amg;
+    initialize_pressure_amg(amg, matrix);
     SolverControl        control(solver.max_iterations,
                           solver.tolerance * rhs.l2_norm());
     SolverCG<VectorType> cg(control);

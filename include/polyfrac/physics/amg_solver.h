@@ -77,6 +77,16 @@ namespace PolyFrac
                const double                          enough = 0.);
 
   /**
+   * Initialises @p amg, Trilinos ML aggregation AMG for the pressure
+   * operator @p matrix of the HFV flow (cells, faces and fracture
+   * unknowns together; symmetric positive definite), with aggregates
+   * coarser than ML's default.
+   */
+  void
+  initialize_pressure_amg(TrilinosWrappers::PreconditionAMG    &amg,
+                          const TrilinosWrappers::SparseMatrix &matrix);
+
+  /**
    * Solves @p matrix @p x = @p rhs by MUMPS (Trilinos' Amesos) on the ranks
    * of the distributed @p matrix; false if MUMPS fails (a singular
    * matrix): the caller says what that means.
