@@ -254,6 +254,7 @@ namespace PolyFrac
             "Flow/Minimum fracture aperture",
             "Flow/Fracture normal transmissibility",
             "Flow/Fracture permeability",
+            "Flow/Fracture intersections",
             "Flow/Fracture compressibility",
             "Flow/Matrix source",
             "Flow/Fracture source",

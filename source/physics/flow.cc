@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -60,6 +61,57 @@ namespace PolyFrac
         for (unsigned int j = 0; j < v.size(); ++j)
           magnitudes[i - 1] += c * std::abs(M(i, j)) * v(j);
       return magnitudes;
+    }
+
+    /** The edge block W (the rows and columns of the edges, 1, 2, ...) of
+     * the HFV matrix @p M of a fracture face. */
+    FullMatrix<double>
+    edge_block(const FullMatrix<double> &M)
+    {
+      const unsigned int n = M.m() - 1;
+      FullMatrix<double> W(n, n);
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          W(a, b) = M(a + 1, b + 1);
+      return W;
+    }
+
+    /** The HFV matrix of a fracture face whose edge block is @p W and whose
+     * kernel holds the constants: M_{a0} = M_{0a} = −Σ_b W_{ab}, M_{00} =
+     * Σ_{ab} W_{ab}. */
+    FullMatrix<double>
+    matrix_of_edge_block(const FullMatrix<double> &W)
+    {
+      const unsigned int n = W.m();
+      FullMatrix<double> M(n + 1, n + 1);
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            M(a + 1, b + 1) = W(a, b);
+            M(a + 1, 0) -= W(a, b);
+            M(0, b + 1) -= W(a, b);
+            M(0, 0) += W(a, b);
+          }
+      return M;
+    }
+
+    /** S = (W⁻¹ + c R)⁻¹ of the edge block @p W⁻¹ (@p inverse_block),
+     * the coefficient @p c and the diagonal resistances @p resistance:
+     * the flow of the face, of conductance c W, in series with R (divided
+     * by c). Symmetrised against round-off. */
+    FullMatrix<double>
+    series(const FullMatrix<double>  &inverse_block,
+           const double               c,
+           const std::vector<double> &resistance)
+    {
+      FullMatrix<double> S = inverse_block;
+      for (unsigned int a = 0; a < S.m(); ++a)
+        S(a, a) += c * resistance[a];
+      S.gauss_jordan();
+      FullMatrix<double> symmetric(S.m(), S.m());
+      symmetric.add(0.5, S);
+      symmetric.Tadd(0.5, S);
+      return symmetric;
     }
   } // namespace
 
@@ -171,6 +223,7 @@ namespace PolyFrac
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       fracture_matrices.push_back(
         fracture_hfv_matrix(geometry, network, edges, i, fracture_alpha));
+    intersection_resistance = intersection_resistances();
     if (context.has_gravity() && prm.fluid_density > 0)
       gravity_potential = interpolate(
         ScalarFunctionFromFunctionObject<dim>([this](const Point<dim> &x) {
@@ -335,6 +388,90 @@ namespace PolyFrac
     const double d   = std::max(aperture, prm.minimum_aperture);
     const double k_f = fracture_property(prm.fracture_permeability, i);
     return k_f > 0 ? k_f * d / prm.viscosity : d * d * d / (12 * prm.viscosity);
+  }
+
+
+
+  template <int dim>
+  FullMatrix<double>
+  Flow<dim>::fracture_operator(const unsigned int i,
+                               const double       aperture) const
+  {
+    const double c = fracture_conductivity(i, aperture);
+    if (intersection_resistance[i].empty())
+      {
+        FullMatrix<double> M = fracture_matrices[i];
+        M *= c;
+        return M;
+      }
+    FullMatrix<double> inverse_block = edge_block(fracture_matrices[i]);
+    inverse_block.gauss_jordan();
+    FullMatrix<double> S = series(inverse_block, c, intersection_resistance[i]);
+    S *= c;
+    return matrix_of_edge_block(S);
+  }
+
+
+
+  template <int dim>
+  FullMatrix<double>
+  Flow<dim>::fracture_operator_derivative(const unsigned int i,
+                                          const double       aperture) const
+  {
+    if (intersection_resistance[i].empty())
+      return fracture_matrices[i];
+    FullMatrix<double> inverse_block = edge_block(fracture_matrices[i]);
+    inverse_block.gauss_jordan();
+    const FullMatrix<double> S = series(inverse_block,
+                                        fracture_conductivity(i, aperture),
+                                        intersection_resistance[i]);
+    FullMatrix<double>       SW(S.m(), S.m()), derivative(S.m(), S.m());
+    S.mmult(SW, inverse_block);
+    SW.mmult(derivative, S);
+    return matrix_of_edge_block(derivative);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  Flow<dim>::intersection_resistances() const
+  {
+    std::vector<std::vector<double>> resistance(network.n_fracture_faces());
+    if (prm.intersections != FlowParameters::Intersections::harmonic_mean)
+      return resistance;
+    const auto aperture = [this](const unsigned int i) {
+      return std::max(fracture_property(prm.aperture_at_contact, i),
+                      prm.minimum_aperture);
+    };
+    const auto permeability = [&](const unsigned int i) {
+      const double k_f = fracture_property(prm.fracture_permeability, i);
+      return k_f > 0 ? k_f : aperture(i) * aperture(i) / 12;
+    };
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      for (unsigned int j = 0; j < edges.face_edges[i].size(); ++j)
+        {
+          const auto &edge = edges.edges[edges.face_edges[i][j].edge];
+          // One face of each fracture that meets at the edge.
+          std::map<unsigned int, unsigned int> fractures;
+          for (const unsigned int face : edge.faces)
+            fractures.emplace(network.fracture_faces[face].fracture, face);
+          if (fractures.size() < 2)
+            continue;
+          double inverse_sum = 0, largest_aperture = 0;
+          for (const auto &fracture : fractures)
+            {
+              inverse_sum += 1 / permeability(fracture.second);
+              largest_aperture =
+                std::max(largest_aperture, aperture(fracture.second));
+            }
+          const double k_I = fractures.size() / inverse_sum;
+          const double T   = k_I * aperture(i) * edge.measure /
+                           (prm.viscosity * largest_aperture / 2);
+          resistance[i].resize(edges.face_edges[i].size(), 0.);
+          resistance[i][j] = 1 / T;
+        }
+    return resistance;
   }
 
 
@@ -537,13 +674,9 @@ namespace PolyFrac
           continue;
         const auto        &ff    = network.fracture_faces[i];
         const auto        &face  = geometry.faces[ff.face];
-        FullMatrix<double> local = fracture_matrices[i];
-        local *= fracture_conductivity(i, data.apertures[i]);
-        Vector<double> local_rhs(local.m());
-        add_gravity_flux(fracture_matrices[i],
-                         fracture_conductivity(i, data.apertures[i]),
-                         fracture_dofs(i),
-                         local_rhs);
+        FullMatrix<double> local = fracture_operator(i, data.apertures[i]);
+        Vector<double>     local_rhs(local.m());
+        add_gravity_flux(local, 1., fracture_dofs(i), local_rhs);
         local(0, 0) += face.measure * data.fracture_storage[i] / dt;
         local_rhs(0) += face.measure * (fracture_source->value(face.centroid) +
                                         data.fracture_rhs[i]) +
@@ -835,8 +968,8 @@ namespace PolyFrac
                              const std::vector<double> &apertures,
                              const Vector<double>      &pressure) const
   {
-    return outward_fluxes(fracture_matrices[i],
-                          fracture_conductivity(i, apertures[i]),
+    return outward_fluxes(fracture_operator(i, apertures[i]),
+                          1.,
                           potential(fracture_dofs(i), pressure));
   }
 
@@ -861,8 +994,8 @@ namespace PolyFrac
     const double k_f = fracture_property(prm.fracture_permeability, i);
     const double slope =
       k_f > 0 ? k_f / prm.viscosity : 3 * d * d / (12 * prm.viscosity);
-    const FullMatrix<double> &B = fracture_matrices[i];
-    const Vector<double>      q = potential(local_dofs, pressure);
+    const FullMatrix<double> B = fracture_operator_derivative(i, d);
+    const Vector<double>     q = potential(local_dofs, pressure);
     for (unsigned int a = 0; a < local_dofs.size(); ++a)
       for (unsigned int b = 0; b < local_dofs.size(); ++b)
         derivative[a] += slope * B(a, b) * q(b);
@@ -945,8 +1078,8 @@ namespace PolyFrac
                         data.time_step *
                         (p_f - previous(dofs.fracture_face_dof(i))));
         std::vector<double> magnitudes =
-          product_sizes(fracture_matrices[i],
-                        fracture_conductivity(i, data.apertures[i]),
+          product_sizes(fracture_operator(i, data.apertures[i]),
+                        1.,
                         fracture_dofs(i));
         // An exchange flux T |σ| (p_f − p_σ) cancels where the fracture
         // and the matrix beside it share their pressure (a conductive

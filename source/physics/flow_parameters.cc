@@ -143,6 +143,27 @@ namespace PolyFrac
                       "fracture aperture in both). One value for every "
                       "fracture, or one per fracture (cubic law or a number "
                       "each): a blocking fracture has a small k_f.");
+    prm.declare_entry(
+      "Fracture intersections",
+      "shared pressure",
+      Patterns::Selection(selection_pattern<FlowParameters::Intersections>()),
+      "How the fracture faces that meet at an intersection (faces of "
+      "different fractures sharing an edge) exchange fluid. shared "
+      "pressure: one pressure at the intersection, shared by every face "
+      "(pressure continuous, fluxes summing to zero), so that a conductive "
+      "fracture carries its flow straight across a blocking one. harmonic "
+      "mean: the intersection is a medium of its own whose permeability "
+      "k_I is the harmonic mean of the permeabilities of the fractures "
+      "that meet there (Fracture permeability, or d_0^2/12 under the cubic "
+      "law); each face reaches the intersection's pressure through k_I d "
+      "|e|/(viscosity l) in series with its own flow (d its Fracture "
+      "aperture at contact, |e| the edge's measure, l half the largest "
+      "d_0 there; apertures floored at Minimum fracture aperture), so "
+      "that a blocking fracture also blocks the conductive ones that "
+      "cross it (Flemisch et al. 2018, benchmark 3, as PorePy sets it "
+      "up). The apertures are those at contact, not the current ones: "
+      "where fractures open far beyond d_0 the intersection resists more "
+      "than the faces around it.");
   }
 
 
@@ -410,6 +431,8 @@ namespace PolyFrac
                                              ">= 0 (m/(Pa s))");
     fracture_permeability = ParameterParsing::per_fracture_doubles(
       prm, where, "Fracture permeability", 0, false, "> 0 (m^2)", "cubic law");
+    intersections =
+      parse_selection<Intersections>(prm.get("Fracture intersections"));
   }
 
 

@@ -802,6 +802,13 @@ CASES = {
          "(m^2) or cubic law, not <cubic>"],
         files={"scene.prm": section("Flow",
                                     Fracture_permeability="cubic, 1e-12")}),
+    "fracture_intersections_misspelt": case(
+        "`Fracture intersections = harmonic` (not one of the choices)",
+        ["Line <", "The entry value harmonic for the entry named Fracture "
+         "intersections does not match the given pattern",
+         "shared pressure|harmonic mean"],
+        files={"scene.prm": section("Flow",
+                                    Fracture_intersections="harmonic")}),
     "minimum_aperture_beneath_double": case(
         "`Minimum fracture aperture = 1e-300` with `Fracture aperture at "
         "contact = 0`: d^3 underflows to 0",

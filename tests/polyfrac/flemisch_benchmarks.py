@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """The 2D benchmarks of Flemisch et al. (2018) on their two coarsest levels
 (benchmarks/flemisch.py runs five and charts them): benchmark 1 (Hydrocoin,
-prm/benchmarks/flemisch-case-1.prm) and benchmark 2 with conductive and
-blocking fractures (flemisch-case-2.prm, flemisch-case-2-blocking.prm).
+prm/benchmarks/flemisch-case-1.prm), benchmark 2 with conductive and
+blocking fractures (flemisch-case-2.prm, flemisch-case-2-blocking.prm) and
+benchmark 3, the complex network from top to bottom and from left to right
+(flemisch-case-3.prm, flemisch-case-3-left-right.prm).
 
 For every reference line: the relative L2 error along the line (defined in
 benchmarks/flemisch.py) at most the bound below on each level, and smaller
@@ -14,12 +16,17 @@ measured when the test was written:
     2a, fracture x = 0.5        0.0581    0.0283
     2a, y = 0.7                 0.0402    0.0211
     2b, (0, 0.1)-(0.9, 1)       0.0149    0.0077
+    3a, (0, 0.5)-(1, 0.9)       0.0243    0.0121
+    3b, (0, 0.5)-(1, 0.9)       0.0144    0.0078
 
 Each case is run once more with one fracture property replaced, and must
 then miss its bound on level 0: the two zones of Hydrocoin with the width of
 the first (its per-fracture aperture ignored: 0.147), the conductive
 network's and the blocking network's normal transmissibility replaced by the
-default 1e-9 m/(Pa s) (ignored: 1.77 and 1.7e8).
+default 1e-9 m/(Pa s) (ignored: 1.77 and 1.7e8), the complex network's
+intersections with one shared pressure instead of the harmonic mean
+permeability (the conductive fractures then cross the barriers: 0.037 and
+0.065).
 
 usage: flemisch_benchmarks.py POLYFRAC SOURCE_DIR WORK_DIR
 Exits non-zero on the first failed check.
@@ -43,6 +50,10 @@ BOUNDS = {
     "flemisch-case-2-blocking.prm": [
         ("diagonal", "pressure", "regular-blocking-diagonal.csv", 0.017,
          0.0087)],
+    "flemisch-case-3.prm": [
+        ("line", "pressure", "complex-top-bottom.csv", 0.027, 0.0135)],
+    "flemisch-case-3-left-right.prm": [
+        ("line", "pressure", "complex-left-right.csv", 0.016, 0.0087)],
 }
 
 # scene -> the setting that ignores one of its fracture properties
@@ -52,6 +63,9 @@ IGNORED = {
     "flemisch-case-2.prm": "Flow/Fracture normal transmissibility=1e-9",
     "flemisch-case-2-blocking.prm":
         "Flow/Fracture normal transmissibility=1e-9",
+    "flemisch-case-3.prm": "Flow/Fracture intersections=shared pressure",
+    "flemisch-case-3-left-right.prm":
+        "Flow/Fracture intersections=shared pressure",
 }
 
 

@@ -272,6 +272,24 @@ namespace PolyFrac
     double
     fracture_conductivity(const unsigned int i, const double aperture) const;
 
+    /** The HFV operator of fracture face @p i at the aperture
+     * @p aperture on its unknowns (p_{f,σ}, then the edges of its loop):
+     * C_σ/η B_σ (fracture_conductivity()), or, where the face meets an
+     * intersection with Flow/Fracture intersections = harmonic mean, the
+     * operator of its flow in series with the intersection resistances R
+     * (intersection_resistances()): on the differences p_{f,σ} − p_e its
+     * edge block is (W⁻¹/c + R)⁻¹, W the edge block of B_σ and c = C_σ/η,
+     * and its first row and column keep the constants in its kernel. */
+    FullMatrix<double>
+    fracture_operator(const unsigned int i, const double aperture) const;
+
+    /** The derivative of fracture_operator() in c = C_σ/η at the aperture
+     * @p aperture: B_σ without intersection resistances, the operator of
+     * the edge block S W⁻¹ S, S = (W⁻¹ + c R)⁻¹, with them. */
+    FullMatrix<double>
+    fracture_operator_derivative(const unsigned int i,
+                                 const double       aperture) const;
+
     /** Λ_f of fracture face @p i (Flow/Fracture normal transmissibility of
      * its fracture). */
     double
@@ -414,6 +432,11 @@ namespace PolyFrac
     std::vector<FullMatrix<double>> cell_matrices;
     /** The HFV matrices of the fracture faces, unit conductivity. */
     std::vector<FullMatrix<double>> fracture_matrices;
+    /** Per fracture face, per edge of its loop: the resistance 1/T_{σe}
+     * between the face and the intersection at that edge (Flow/Fracture
+     * intersections = harmonic mean), 0 at an edge that is no intersection;
+     * empty for every face with shared pressures or no intersection. */
+    std::vector<std::vector<double>> intersection_resistance;
     /** Sources and boundary data. */
     std::unique_ptr<Expression<dim>> matrix_source, fracture_source,
       boundary_pressure, boundary_flux;
@@ -423,6 +446,17 @@ namespace PolyFrac
      * face and edge centroids), or empty without gravity: the fluxes are
      * those of the potential p − γ. */
     Vector<double> gravity_potential;
+
+    /** The resistances of Flow/Fracture intersections = harmonic mean:
+     * at an edge e where faces of two or more fractures meet, T_{σe} = k_I
+     * d_σ |e|/(η ℓ_e) between face σ and the intersection, k_I the harmonic
+     * mean of the permeabilities k_j of the fractures there (Fracture
+     * permeability, or d_{0,j}²/12 under the cubic law), d_σ the aperture
+     * at contact of σ's fracture, ℓ_e half the largest d_{0,j} there (the
+     * apertures floored at d_min). Returns 1/T_{σe} per face and edge of
+     * its loop, an empty list for a face at no intersection. */
+    std::vector<std::vector<double>>
+    intersection_resistances() const;
 
     /** The potential p − γ of @p pressure on the unknowns @p local_dofs. */
     Vector<double>

@@ -5,7 +5,9 @@
 
 #include <polyfrac/base/parameter_context.h>
 #include <polyfrac/base/region_values.h>
+#include <polyfrac/base/selection.h>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +35,18 @@ namespace PolyFrac
       /** The fluid at rest under gravity: Top pressure + ρ_f |g| (z_top −
        * z). */
       hydrostatic
+    };
+
+    /** How the fracture faces that meet at an intersection edge exchange
+     * fluid (Flow/Fracture intersections). */
+    enum class Intersections
+    {
+      /** One pressure at the edge, shared by every face (Kirchhoff). */
+      shared_pressure,
+      /** Each face reaches the intersection's pressure through the
+       * transmissibility of a medium with the harmonic mean permeability of
+       * the fractures that meet there (Flow::intersection_resistances()). */
+      harmonic_mean
     };
 
     /** Declares the subsection Flow. */
@@ -143,6 +157,8 @@ namespace PolyFrac
      * (ParameterParsing::per_fracture_value()): the conductivity k_f d/η along
      * the fracture instead of the cubic law's d³/(12 η), which 0 stands for. */
     std::vector<double> fracture_permeability;
+    /** Flow/Fracture intersections. */
+    Intersections intersections = Intersections::shared_pressure;
     /** Matrix source h_m, an expression. */
     std::string matrix_source;
     /** Fracture source h_f, an expression. */
@@ -166,6 +182,15 @@ namespace PolyFrac
     read_permeability(const std::string      &text,
                       const std::string      &where,
                       const ParameterContext &context);
+  };
+
+  /** The names of FlowParameters::Intersections. */
+  template <>
+  struct SelectionNames<FlowParameters::Intersections>
+  {
+    /** The names, in the order of the values. */
+    static constexpr std::array<const char *, 2> names = {
+      {"shared pressure", "harmonic mean"}};
   };
 } // namespace PolyFrac
 
