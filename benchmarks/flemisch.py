@@ -154,6 +154,17 @@ def measure(program, work, levels):
     return rows
 
 
+def save_error_chart(figure, axis, label, path):
+    """Labels the log-log chart AXIS of errors (LABEL) against unknowns
+    and saves FIGURE to PATH."""
+    axis.set_xlabel("unknowns")
+    axis.set_ylabel(label)
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=7)
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+
+
 def chart(rows, errors_png, profiles_png):
     """Error against unknowns per line, and each line's profile on every
     level over the reference."""
@@ -167,12 +178,8 @@ def chart(rows, errors_png, profiles_png):
         axis.loglog([r["unknowns"] for r in mine],
                     [r["error"] for r in mine], "o-",
                     label=f"{case}, {line}")
-    axis.set_xlabel("unknowns")
-    axis.set_ylabel("relative L2 error along the line")
-    axis.grid(True, which="both", alpha=0.3)
-    axis.legend(fontsize=8)
-    figure.tight_layout()
-    figure.savefig(errors_png, dpi=120)
+    save_error_chart(figure, axis, "relative L2 error along the line",
+                     errors_png)
     figure, axes = plt.subplots(1, len(lines), figsize=(4 * len(lines), 3.5))
     for axis, (case, line) in zip(axes, lines):
         mine = [r for r in rows if (r["case"], r["line"]) == (case, line)]
@@ -190,15 +197,20 @@ def chart(rows, errors_png, profiles_png):
     figure.savefig(profiles_png, dpi=120)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--levels", type=int, default=5)
+def parse_arguments(description, levels, work):
+    """The command line of a benchmark script: --levels (default
+    LEVELS), --polyfrac, --work (default output/WORK) and --no-charts."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--levels", type=int, default=levels)
     parser.add_argument("--polyfrac",
                         default=os.path.join(ROOT, "build", "polyfrac"))
-    parser.add_argument("--work", default=os.path.join(ROOT, "output",
-                                                       "flemisch"))
+    parser.add_argument("--work", default=os.path.join(ROOT, "output", work))
     parser.add_argument("--no-charts", action="store_true")
-    arguments = parser.parse_args()
+    return parser.parse_args()
+
+
+def main():
+    arguments = parse_arguments(__doc__.split("\n\n")[0], 5, "flemisch")
     rows = measure(arguments.polyfrac, arguments.work, arguments.levels)
     keys = ["case", "line", "level", "cells", "unknowns", "wall_seconds",
             "error", "max_error"]

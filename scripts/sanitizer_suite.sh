@@ -46,6 +46,11 @@ long_tests=(
   polyfrac/equal_runs_default_scene_newton_fgmres
   polyfrac/fixed_stress_preconditioner
   parallel/poromechanics_2d_slip_2_ranks_newton_fgmres
+  # Added 2026-11-28: the T-shaped intersection on two levels and twice
+  # more on one (Release 28 s); Coulomb contact stays in the Debug suite
+  # through polyfrac/b1_coulomb, its quasi-static steps through the
+  # nucleation scene.
+  polyfrac/tfrac_benchmark
   # Release 2.5 s: the slip scene's step 0 and step 1 four times; the
   # equilibrium start stays in Debug through poromechanics_2d_slip.
   app/equilibrium_start_01
