@@ -1,19 +1,23 @@
 #!/usr/bin/python3
 """Berre et al. (2021), "Verification benchmarks for single-phase flow in
 three-dimensional fractured porous media": case 1 (single fracture,
-prm/benchmarks/berre-case-1.prm: the steady head and a tracer) and case 2
+prm/benchmarks/berre-case-1.prm: the steady head and a tracer), case 2
 (the regular network, conductive and blocking: berre-case-2.prm,
-berre-case-2-blocking.prm, the steady pressure) against the benchmark's
-participants at their middle refinement (about 10,000 cells in case 1,
-4,000 in case 2), with the benchmark's own measures (benchmarks/data/berre/,
-derived by berre_band.py from the benchmark's data):
+berre-case-2-blocking.prm, the steady pressure) and case 4 (the field
+network, berre-case-4.prm, the steady pressure along two lines) against
+the benchmark's participants at their middle refinement (about 10,000 cells
+in case 1, 4,000 in case 2; case 4 has one, about 260,000 cells), with the
+benchmark's own measures (benchmarks/data/berre/, derived by berre_band.py
+from the benchmark's data):
 
 - the match count: of 100 evenly spaced points of a curve, those where
   PolyFrac's value lies within the band between the 10 % and 90 %
   percentiles of the participating methods (compare_my_method.py's rule),
   to be compared with the participants' own counts. The curves: the
   pressure along the benchmark's line (case 1: (0, 100, 100) to
-  (100, 0, 0); case 2: (0, 0, 0) to (1, 1, 1)); in case 1 also the
+  (100, 0, 0); case 2: (0, 0, 0) to (1, 1, 1); case 4: (350, 100, -100)
+  to (-500, 1500, 500) and (-500, 100, -100) to (350, 1500, 500)); in
+  case 1 also the
   matrix concentration along that line and the fracture concentration
   along (0, 100, 80)-(100, 0, 20) at t = 1e9 s, and over time the tracer
   held in the bottom layer (the integral of porosity times concentration)
@@ -31,7 +35,7 @@ its region integrals (Output/Region integrals).
 usage: benchmarks/berre.py [--case CASE ...] [--levels N] [--polyfrac PATH]
                            [--work DIR]
 Writes benchmarks/berre-CASE.csv for each case (case-1, case-2-conductive,
-case-2-blocking; all by default) and prints it beside the participants.
+case-2-blocking, case-4; all by default) and prints it beside the participants.
 """
 import argparse
 import csv
@@ -65,6 +69,9 @@ CASES = {
         "pressure": ("line", "diagonal", "pressure")}),
     "case-2-blocking": ("berre-case-2-blocking.prm", {
         "pressure": ("line", "diagonal", "pressure")}),
+    "case-4": ("berre-case-4.prm", {
+        "line-0": ("line", "line_0", "pressure"),
+        "line-1": ("line", "line_1", "pressure")}),
 }
 
 
@@ -119,6 +126,20 @@ def measures(values, name):
     squares = [(flemisch.interpolate(x, s, p) - flemisch.interpolate(
         x, reference["abscissa"], reference["value"]))**2 for x in ls]
     return matches, math.sqrt(sum(squares) / len(squares)) / span
+
+
+def band_distance(values, name):
+    """The relative L2 distance of the curve VALUES ((abscissa, value)
+    pairs) from the middle of the participants' band of the quantity NAME,
+    on the band's 1,000 points: a measure for a case without a reference
+    (case 4), not one of the benchmark's."""
+    band = read_columns(name + "-band.csv")
+    s, p = [v[0] for v in values], [v[1] for v in values]
+    middle = [(lower + upper) / 2
+              for lower, upper in zip(band["lower"], band["upper"])]
+    squares = [(flemisch.interpolate(x, s, p) - m)**2
+               for x, m in zip(band["abscissa"], middle)]
+    return math.sqrt(sum(squares) / sum(m * m for m in middle))
 
 
 def participants(name):

@@ -28,7 +28,10 @@ and the tracer's rate out through the outflow window
 ("c-outflux-over-time"; the files' columns 1, 2 and 3). DTU gave no concentrations. Case 2: the
 pressure along (0, 0, 0)-(1, 1, 1), conductive ("case-2-conductive") and
 blocking ("case-2-blocking", only the methods whose pressure may jump
-across a fracture).
+across a fracture). Case 4 (the field network, one mesh of about 260,000
+cells per method, no reference): the pressure along (350, 100, -100)-(-500,
+1500, 500) ("case-4-line-0") and (-500, 100, -100)-(350, 1500, 500)
+("case-4-line-1").
 
 usage: berre_band.py REPOSITORY   (writes into benchmarks/data/berre/)
 """
@@ -60,6 +63,15 @@ METHODS_2_BLOCKING = {"UiB": ["TPFA", "MPFA", "MVEM", "RT0"],
                       "UNICE_UNIGE": ["VAG_Disc", "HFV_Disc"],
                       "UNICAMP": ["Hybrid_Hdiv"],
                       "UNIL_USI": ["FE_AMR_AFC"]}
+# Case 4: the 14 methods of compare_my_method.py (USTUTT's BOX and TPFA
+# and UNIL_USI gave files but are not among them).
+METHODS_4 = {"UiB": ["TPFA", "MPFA", "MVEM", "RT0"],
+             "USTUTT": ["MPFA", "TPFA_Circ"],
+             "LANL": ["MFD"],
+             "UNICE_UNIGE": ["VAG_Cont", "HFV_Cont", "VAG_Disc", "HFV_Disc"],
+             "ETHZ_USI": ["FEM_LM"],
+             "UNICAMP": ["Hybrid_Hdiv"],
+             "DTU": ["FEM_COMSOL"]}
 # Per quantity: the results folder, the methods, a method's curve file and
 # sizes file, the columns (abscissa, value), the reference if any.
 QUANTITIES = {
@@ -90,6 +102,14 @@ QUANTITIES = {
         folder="data/regular/results/", methods=METHODS_2_BLOCKING,
         curve="dol_cond_1_refinement_1.csv", sizes="results_cond_1.csv",
         columns=(0, 1), reference="USTUTT/MPFA/dol_cond_1_refinement_4.csv"),
+    "case-4-line-0": dict(
+        folder="data/field/results/", methods=METHODS_4,
+        curve="dol_line_0.csv", sizes="results.csv", sizes_row=0,
+        columns=(0, 1)),
+    "case-4-line-1": dict(
+        folder="data/field/results/", methods=METHODS_4,
+        curve="dol_line_1.csv", sizes="results.csv", sizes_row=0,
+        columns=(0, 1)),
 }
 
 
@@ -124,13 +144,13 @@ def match_count(x, y, ls, lower, upper):
     return int(numpy.sum((lower_eval <= y_eval) & (y_eval <= upper_eval)))
 
 
-def sizes_of(repository, path):
-    """A method's cells of dimension 3 and unknowns at refinement 1 (its
-    sizes file: per refinement, the cells of dimension 0, 1, 2, 3, the
-    unknowns and the matrix's nonzeros), or empty fields where the method
-    gave none."""
+def sizes_of(repository, path, row):
+    """A method's cells of dimension 3 and unknowns in the row ROW of its
+    sizes file (per refinement, the cells of dimension 0, 1, 2, 3, the
+    unknowns and the matrix's nonzeros; row 1 is refinement 1, case 4 has
+    one row), or empty fields where the method gave none."""
     try:
-        sizes = read(repository, path)[1]
+        sizes = read(repository, path)[row]
     except subprocess.CalledProcessError:
         return "", ""
     return int(sizes[3]), int(sizes[4])
@@ -156,7 +176,8 @@ def reduce_quantity(repository, name, setup):
             curves[place + "/" + method] = curve(
                 read(repository, folder + setup["curve"]), setup["columns"])
             cells[place + "/" + method] = sizes_of(
-                repository, folder + setup["sizes"])
+                repository, folder + setup["sizes"],
+                setup.get("sizes_row", 1))
     low = max(c[0, 0] for c in curves.values())
     high = min(c[-1, 0] for c in curves.values())
     ls = numpy.linspace(low, high, 1000)

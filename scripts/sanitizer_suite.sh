@@ -51,6 +51,9 @@ long_tests=(
   # through polyfrac/b1_coulomb, its quasi-static steps through the
   # nucleation scene.
   polyfrac/tfrac_benchmark
+  # Added 2026-11-28: Berre's case 4 three times on 41,481 tetrahedra
+  # (Release 44 s); 3D flow on gmsh meshes stays through berre_benchmarks.
+  polyfrac/berre_case_4
   # Release 2.5 s: the slip scene's step 0 and step 1 four times; the
   # equilibrium start stays in Debug through poromechanics_2d_slip.
   app/equilibrium_start_01
