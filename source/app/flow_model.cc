@@ -214,7 +214,9 @@ namespace PolyFrac
                                *discretization.dofs,
                                nullptr,
                                nullptr,
-                               fields);
+                               fields,
+                               {},
+                               {pressure_reconstruction(flow, pressure)});
   }
 
 
@@ -237,6 +239,17 @@ namespace PolyFrac
                                  *discretization.dofs,
                                  nullptr,
                                  fields);
+  }
+
+
+
+  template <int dim>
+  AffineOutputField<dim>
+  pressure_reconstruction(const Flow<dim> &flow, const Vector<double> &pressure)
+  {
+    return {"pressure_linear",
+            flow.cell_pressures(pressure),
+            flow.cell_pressure_gradients(pressure)};
   }
 
 
@@ -293,5 +306,9 @@ namespace PolyFrac
 
 
   template class FlowModel<2>;
+  template AffineOutputField<2>
+  pressure_reconstruction(const Flow<2> &, const Vector<double> &);
+  template AffineOutputField<3>
+  pressure_reconstruction(const Flow<3> &, const Vector<double> &);
   template class FlowModel<3>;
 } // namespace PolyFrac

@@ -1035,7 +1035,8 @@ namespace PolyFrac
       {{"pressure", p},
        {"porosity", porosity},
        vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))},
-      biot_pressure);
+      biot_pressure,
+      {pressure_reconstruction(flow, pressure)});
   }
 
 

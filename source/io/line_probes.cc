@@ -151,7 +151,8 @@ namespace PolyFrac
 
 
     /** The columns of the point data vectors of @p data (the displacement:
-     * name_x, ...) into @p columns, and for each its component. */
+     * name_x, ...) and of its point data scalars (PatchData::point_scalars)
+     * into @p columns, and for each its component. */
     template <int dim, int spacedim>
     std::vector<unsigned int>
     point_data_components(const PatchData<dim, spacedim> &data,
@@ -166,6 +167,11 @@ namespace PolyFrac
               columns.push_back(name + "_" + axes[c - first]);
               components.push_back(c);
             }
+      for (const unsigned int c : data.point_scalars)
+        {
+          columns.push_back(data.names[c]);
+          components.push_back(c);
+        }
       return components;
     }
 

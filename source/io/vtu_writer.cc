@@ -233,19 +233,22 @@ namespace PolyFrac
 
   template <int dim>
   PatchData<dim, dim>
-  matrix_patches(const MeshGeometry<dim>          &geometry,
-                 const FractureNetwork<dim>       &network,
-                 const DoFMap<dim>                &dofs,
-                 const Elasticity<dim> *const      elasticity,
-                 const MechanicalState<dim> *const state,
-                 const std::vector<OutputField>   &cell_fields,
-                 const std::vector<double>        &biot_pressure)
+  matrix_patches(const MeshGeometry<dim>                   &geometry,
+                 const FractureNetwork<dim>                &network,
+                 const DoFMap<dim>                         &dofs,
+                 const Elasticity<dim> *const               elasticity,
+                 const MechanicalState<dim> *const          state,
+                 const std::vector<OutputField>            &cell_fields,
+                 const std::vector<double>                 &biot_pressure,
+                 const std::vector<AffineOutputField<dim>> &affine_fields)
   {
     using namespace DataComponentInterpretation;
     const bool         mechanics = elasticity != nullptr && state != nullptr;
     std::vector<Field> fields;
     if (mechanics)
       fields = {{"displacement", dim, component_is_part_of_vector}};
+    for (const AffineOutputField<dim> &field : affine_fields)
+      fields.push_back({field.name, 1, component_is_scalar});
     fields.push_back({"polytope", 1, component_is_scalar});
     if (mechanics)
       for (const std::string name : {"stress", "total_stress"})
@@ -257,8 +260,11 @@ namespace PolyFrac
                                                   component_is_part_of_vector});
     PatchData<dim, dim> data           = layout<dim, dim>(fields);
     const unsigned int  n_components   = data.names.size();
-    const unsigned int  first_constant = mechanics ? dim : 0;
-    const auto         &mesh           = geometry.mesh;
+    const unsigned int  first_affine   = mechanics ? dim : 0;
+    const unsigned int  first_constant = first_affine + affine_fields.size();
+    for (unsigned int a = 0; a < affine_fields.size(); ++a)
+      data.point_scalars.push_back(first_affine + a);
+    const auto &mesh = geometry.mesh;
 
     // Reconstructions are per polytope: cache the last one (fine cells of
     // an agglomerate are usually consecutive).
@@ -314,6 +320,12 @@ namespace PolyFrac
             for (unsigned int d = 0; d < dim; ++d)
               patch.data(d, i) = u[d];
           }
+        for (unsigned int a = 0; a < affine_fields.size(); ++a)
+          for (unsigned int i = 0; i < fine.vertices.size(); ++i)
+            patch.data(first_affine + a, i) =
+              affine_fields[a].values[K] +
+              affine_fields[a].gradients[K] *
+                (mesh.vertices[fine.vertices[i]] - geometry.cells[K].centroid);
         set_constant(patch, first_constant, cell_values);
         data.patches.push_back(std::move(patch));
       }
@@ -722,7 +734,8 @@ namespace PolyFrac
                  const Elasticity<2> *const,
                  const MechanicalState<2> *const,
                  const std::vector<OutputField> &,
-                 const std::vector<double> &);
+                 const std::vector<double> &,
+                 const std::vector<AffineOutputField<2>> &);
   template PatchData<1, 2>
   fracture_patches(const MeshGeometry<2> &,
                    const FractureNetwork<2> &,
@@ -736,7 +749,8 @@ namespace PolyFrac
                  const Elasticity<3> *const,
                  const MechanicalState<3> *const,
                  const std::vector<OutputField> &,
-                 const std::vector<double> &);
+                 const std::vector<double> &,
+                 const std::vector<AffineOutputField<3>> &);
   template PatchData<2, 3>
   fracture_patches(const MeshGeometry<3> &,
                    const FractureNetwork<3> &,

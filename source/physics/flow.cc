@@ -1165,6 +1165,26 @@ namespace PolyFrac
 
 
   template <int dim>
+  std::vector<Tensor<1, dim>>
+  Flow<dim>::cell_pressure_gradients(const Vector<double> &pressure) const
+  {
+    const auto                 &mesh = geometry.mesh;
+    std::vector<Tensor<1, dim>> gradients(mesh.n_cells());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const double p_K = pressure(dofs.cell_dof(c));
+        for (const unsigned int f : mesh.cells[c].faces)
+          gradients[c] += (pressure(dofs.face_dof(f, c)) - p_K) *
+                          mesh.orientation(c, f) *
+                          geometry.faces[f].vector_area;
+        gradients[c] /= geometry.cells[c].measure;
+      }
+    return gradients;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   Flow<dim>::fracture_pressures(const Vector<double> &pressure) const
   {

@@ -5,8 +5,10 @@ column of 2 x 20 cells at rest, a fracture along x = 25 from y = -180 to
 
 - vertical: x = 12.5, y from -197.5 to -2.5, 40 points (none on a cell
   boundary): the pressure of every point is that of its cell, the
-  hydrostatic 1e5 + rho_f g (-y_K) at the cell's centre y_K, and the total
-  stress its cell's lithostatic one; no fracture field (the line misses
+  hydrostatic 1e5 + rho_f g (-y_K) at the cell's centre y_K, the affine
+  reconstruction `pressure_linear` (p_K with its HFV gradient) the
+  hydrostatic pressure at the point itself, and the total stress its
+  cell's lithostatic one; no fracture field (the line misses
   the fracture);
 - fracture: x = 25, y from -175 to -25, 16 points at the middles of the
   fracture faces: the fracture pressure is hydrostatic there, and the
@@ -69,7 +71,7 @@ directory, _ = run_scene(
 rows, times = read(directory, "vertical")
 if len(rows) != 3 * 40:
     fail(f"vertical: {len(rows)} rows, expected 120")
-worst = 0.0
+worst = worst_linear = 0.0
 for row in rows:
     y = float(row["y"])
     centre = -195.0 + 10.0 * math.floor((y + 200.0) / 10.0)
@@ -85,8 +87,14 @@ for row in rows:
              f"{hydrostatic(centre)}")
     if not float(row["total_stress_yy"]) < -2e6:
         fail(f"vertical: total stress {row['total_stress_yy']} at y = {y}")
+    p_linear = float(row["pressure_linear"])
+    worst_linear = max(worst_linear, abs(p_linear / hydrostatic(y) - 1))
+    if not close(p_linear, hydrostatic(y)):
+        fail(f"vertical: pressure_linear {p_linear} at y = {y}, not the "
+             f"hydrostatic {hydrostatic(y)}")
 print(f"vertical: {len(rows)} rows at t = {times}; pressures its cells' to "
-      f"{worst:.2g}")
+      f"{worst:.2g}, pressure_linear hydrostatic at the point to "
+      f"{worst_linear:.2g}")
 
 rows, _ = read(directory, "fracture")
 worst = 0.0

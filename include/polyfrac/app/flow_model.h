@@ -9,6 +9,7 @@
 #include <polyfrac/discretization/level_discretization.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
 #include <polyfrac/fractures/fracture_edges.h>
+#include <polyfrac/io/vtu_writer.h>
 #include <polyfrac/physics/flow.h>
 #include <polyfrac/physics/transport.h>
 #include <polyfrac/postprocessing/fluid_volumes.h>
@@ -122,6 +123,16 @@ namespace PolyFrac
    * (ModelRegistry::Description::entries). */
   std::vector<std::string>
   flow_entries();
+
+  /** `pressure_linear`, the output field of the models with flow: the
+   * cell pressure p_K of @p pressure with its HFV gradient
+   * (Flow::cell_pressure_gradients()), affine over each polytope, point
+   * data that line probes interpolate (exact for an affine pressure),
+   * beside the constant `pressure`. */
+  template <int dim>
+  AffineOutputField<dim>
+  pressure_reconstruction(const Flow<dim>      &flow,
+                          const Vector<double> &pressure);
 } // namespace PolyFrac
 
 #endif

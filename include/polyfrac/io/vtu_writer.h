@@ -67,6 +67,10 @@ namespace PolyFrac
      * patch keeps one row).
      */
     std::vector<CellArray> cell_arrays;
+    /** The point data components that are scalar fields (those of
+     * AffineOutputField), which line probes sample like the displacement;
+     * not the index `polytope` or `fracture`. */
+    std::vector<unsigned int> point_scalars;
   };
 
   /** A scalar or vector field with one value per polytope (matrix output)
@@ -82,6 +86,20 @@ namespace PolyFrac
     std::vector<double> values;
     /** 1 for a scalar, the dimension for a vector. */
     unsigned int n_components = 1;
+  };
+
+  /** A scalar field affine over each polytope, written as VTU point data:
+   * at a vertex x of a fine cell of polytope K, values[K] + gradients[K]·(x
+   * − x_K), x_K the centroid of K (discontinuous across polytopes). */
+  template <int dim>
+  struct AffineOutputField
+  {
+    /** The name of the data array in the VTU file. */
+    std::string name;
+    /** The value at the centroid of each polytope. */
+    std::vector<double> values;
+    /** The gradient in each polytope. */
+    std::vector<Tensor<1, dim>> gradients;
   };
 
   /** The vector field @p name of @p vectors (one per polytope or fracture
@@ -109,20 +127,23 @@ namespace PolyFrac
    * − b p_K I: with the in-situ stress and, given @p biot_pressure, the
    * values b p_K, the pore pressure; doc/scheme.md §1), `polytope` (the
    * index of K) and the @p cell_fields are constant over the patch: cell
-   * data, but `polytope`, point data (PatchData::cell_arrays).
+   * data, but `polytope`, point data (PatchData::cell_arrays). The
+   * @p affine_fields are point data after the displacement
+   * (PatchData::point_scalars).
    * Without @p elasticity and @p state (a model without mechanics) the
    * displacement and the stresses are left out. On more than one rank, the
    * patches of this rank's polytopes (@p dofs).
    */
   template <int dim>
   PatchData<dim, dim>
-  matrix_patches(const MeshGeometry<dim>          &geometry,
-                 const FractureNetwork<dim>       &network,
-                 const DoFMap<dim>                &dofs,
-                 const Elasticity<dim> *const      elasticity,
-                 const MechanicalState<dim> *const state,
-                 const std::vector<OutputField>   &cell_fields   = {},
-                 const std::vector<double>        &biot_pressure = {});
+  matrix_patches(const MeshGeometry<dim>                   &geometry,
+                 const FractureNetwork<dim>                &network,
+                 const DoFMap<dim>                         &dofs,
+                 const Elasticity<dim> *const               elasticity,
+                 const MechanicalState<dim> *const          state,
+                 const std::vector<OutputField>            &cell_fields   = {},
+                 const std::vector<double>                 &biot_pressure = {},
+                 const std::vector<AffineOutputField<dim>> &affine_fields = {});
 
   /**
    * The fracture output: patches of dimension dim-1, one per fracture face

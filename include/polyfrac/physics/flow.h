@@ -191,6 +191,13 @@ namespace PolyFrac
     std::vector<double>
     cell_pressures(const Vector<double> &pressure) const;
 
+    /** The consistent HFV gradient ∇_K p = (1/|K|) Σ_σ |σ| (p_{Kσ} − p_K)
+     * n_{Kσ} per cell (doc/scheme.md §7): with p_K, the affine
+     * reconstruction p_K + ∇_K p·(x − x_K) of the pressure in K, exact for
+     * an affine pressure. */
+    std::vector<Tensor<1, dim>>
+    cell_pressure_gradients(const Vector<double> &pressure) const;
+
     /** The injection pressure at @p time: the largest of @p pressure in
      * the cells and fracture faces where a source injects (none if no
      * source does). */
