@@ -224,6 +224,13 @@ namespace PolyFrac
       fracture_matrices.push_back(
         fracture_hfv_matrix(geometry, network, edges, i, fracture_alpha));
     intersection_resistance = intersection_resistances();
+    inverse_edge_blocks.resize(network.n_fracture_faces());
+    for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
+      if (!intersection_resistance[i].empty())
+        {
+          inverse_edge_blocks[i] = edge_block(fracture_matrices[i]);
+          inverse_edge_blocks[i].gauss_jordan();
+        }
     if (context.has_gravity() && prm.fluid_density > 0)
       gravity_potential = interpolate(
         ScalarFunctionFromFunctionObject<dim>([this](const Point<dim> &x) {
@@ -404,9 +411,8 @@ namespace PolyFrac
         M *= c;
         return M;
       }
-    FullMatrix<double> inverse_block = edge_block(fracture_matrices[i]);
-    inverse_block.gauss_jordan();
-    FullMatrix<double> S = series(inverse_block, c, intersection_resistance[i]);
+    FullMatrix<double> S =
+      series(inverse_edge_blocks[i], c, intersection_resistance[i]);
     S *= c;
     return matrix_of_edge_block(S);
   }
@@ -420,12 +426,11 @@ namespace PolyFrac
   {
     if (intersection_resistance[i].empty())
       return fracture_matrices[i];
-    FullMatrix<double> inverse_block = edge_block(fracture_matrices[i]);
-    inverse_block.gauss_jordan();
-    const FullMatrix<double> S = series(inverse_block,
+    const FullMatrix<double> &inverse_block = inverse_edge_blocks[i];
+    const FullMatrix<double>  S             = series(inverse_block,
                                         fracture_conductivity(i, aperture),
                                         intersection_resistance[i]);
-    FullMatrix<double>       SW(S.m(), S.m()), derivative(S.m(), S.m());
+    FullMatrix<double>        SW(S.m(), S.m()), derivative(S.m(), S.m());
     S.mmult(SW, inverse_block);
     SW.mmult(derivative, S);
     return matrix_of_edge_block(derivative);

@@ -444,6 +444,10 @@ namespace PolyFrac
      * intersections = harmonic mean), 0 at an edge that is no intersection;
      * empty for every face with shared pressures or no intersection. */
     std::vector<std::vector<double>> intersection_resistance;
+    /** W⁻¹, the inverse of the edge block of fracture_matrices[i], for
+     * every face with intersection resistances (empty for the others):
+     * fracture_operator() needs it at every aperture. */
+    std::vector<FullMatrix<double>> inverse_edge_blocks;
     /** Sources and boundary data. */
     std::unique_ptr<Expression<dim>> matrix_source, fracture_source,
       boundary_pressure, boundary_flux;
