@@ -30,7 +30,11 @@ from the benchmark's data):
 
 PolyFrac's values are those of its line probes (a constant per cell or
 fracture face, interpolated linearly like the participants' curves) and of
-its region integrals (Output/Region integrals).
+its region integrals (Output/Region integrals). The pressure is measured
+twice: as the cells' constants (`pressure`, the function of the HFV
+scheme, what its two HFV participants gave) and as the affine
+reconstruction with the consistent HFV gradient (`pressure_linear`, the
+`_affine` columns).
 
 usage: benchmarks/berre.py [--case CASE ...] [--levels N] [--polyfrac PATH]
                            [--work DIR]
@@ -172,6 +176,15 @@ def compare(case, arguments):
             row[f"{quantity}_matches"] = matches
             if error is not None:
                 row[f"{quantity}_relative_l2_error"] = f"{error:.4e}"
+            if source[0] == "line" and source[2] == "pressure":
+                matches, error = measures(
+                    curve_of(work, level["level"],
+                             (*source[:2], "pressure_linear")),
+                    f"{case}-{quantity}")
+                row[f"{quantity}_affine_matches"] = matches
+                if error is not None:
+                    row[f"{quantity}_affine_relative_l2_error"] = \
+                        f"{error:.4e}"
         rows.append(row)
     with open(os.path.join(HERE, f"berre-{case}.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, list(rows[0]), lineterminator="\n")
@@ -180,16 +193,19 @@ def compare(case, arguments):
     print(case)
     for quantity in curves:
         others = participants(f"{case}-{quantity}")
-        print(f"  {quantity}: matches of PolyFrac's levels "
-              f"{[r[quantity + '_matches'] for r in rows]}, participants' "
-              f"median {median(int(r['matches']) for r in others)} "
-              f"(range {min(int(r['matches']) for r in others)}-"
-              f"{max(int(r['matches']) for r in others)})")
-        if "relative_l2_error" in others[0]:
-            print(f"  {quantity}: relative L2 errors "
-                  f"{[r[quantity + '_relative_l2_error'] for r in rows]}, "
-                  f"participants' median "
-                  f"{median(float(r['relative_l2_error']) for r in others)}")
+        for column in (quantity, quantity + "_affine"):
+            if column + "_matches" not in rows[0]:
+                continue
+            print(f"  {column}: matches of PolyFrac's levels "
+                  f"{[r[column + '_matches'] for r in rows]}, participants' "
+                  f"median {median(int(r['matches']) for r in others)} "
+                  f"(range {min(int(r['matches']) for r in others)}-"
+                  f"{max(int(r['matches']) for r in others)})")
+            if "relative_l2_error" in others[0]:
+                print(f"  {column}: relative L2 errors "
+                      f"{[r[column + '_relative_l2_error'] for r in rows]}, "
+                      f"participants' median "
+                      f"{median(float(r['relative_l2_error']) for r in others)}")
     for r in rows:
         print(f"  level {r['level']}: {r['cells']} cells, {r['unknowns']} "
               f"unknowns, {float(r['wall_seconds']):.1f} s")

@@ -3,15 +3,22 @@
 reference and its participants' band along the benchmark's line
 (benchmarks/berre.py runs more levels beside the participants).
 
-- Case 1 (prm/benchmarks/berre-case-1.prm) on its coarsest level (1,275
-  tetrahedra): the relative L2 error at most 0.062 (0.0550 measured when
-  the test was written), at least 15 of 100 points within the band (24).
+- Case 1 (prm/benchmarks/berre-case-1.prm) on its coarsest level (1,477
+  tetrahedra, graded towards the fracture and the windows): the relative
+  L2 error at most 0.052 (0.0470 measured when the bound was set), at
+  least 30 of 100 points within the band (35).
   Its tracer (100 steps; the program stops if its balance fails) stays
-  within [0, 0.01], the inflow's concentration, along both lines. Runs
+  within [0, 0.01], the inflow's concentration, along both lines, up to
+  1e-6 relative: upwinding keeps the bounds for fluxes that balance in
+  every cell and fracture face, and the exchange fluxes T_n |σ| (p_Kσ −
+  p_f) (T_n = 20 m/s per unit of pressure) carry the round-off of the
+  pressures, about 1e-12 m³/s, against 1.4e-6 m³/s through the fracture's
+  corner face at (0, 100, 80) (1.6e-7 above the bound measured, with the
+  direct solver too). Runs
   with one property ignored (flow only) must miss the error bound: the
-  bottom layer's permeability (one value for both regions: 0.205), the
-  fracture's permeability (1e-3 instead of 1e-1: 0.071), its normal
-  transmissibility (the default 1e-9: 0.375).
+  bottom layer's permeability (one value for both regions: 0.207), the
+  fracture's permeability (1e-3 instead of 1e-1: 0.066), its normal
+  transmissibility (the default 1e-9: 0.377).
 - Case 2, conductive and blocking (berre-case-2.prm,
   berre-case-2-blocking.prm), on 16^3 cubes, the benchmark's middle
   refinement: the match count at least the participants' median on the
@@ -38,7 +45,7 @@ sys.path.insert(0, os.path.join(source, "benchmarks"))
 import berre  # noqa: E402
 import flemisch  # noqa: E402
 
-BOUND, MATCHES = 0.062, 15
+BOUND, MATCHES = 0.052, 30
 # Per variant of case 2: the scene, the L2 error bound and the settings
 # that ignore a property.
 CASE_2 = {"case-2-conductive": ("berre-case-2.prm", 0.12,
@@ -80,7 +87,7 @@ for probe, column in (("diagonal", "concentration"),
         work, "case-1", f"line-{probe}-level-0.csv"), column)]
     print(f"case 1, {column} along the {probe}: {min(values):.6g} to "
           f"{max(values):.6g}")
-    if not (min(values) >= -1e-14 and max(values) <= 0.01 * (1 + 1e-12)):
+    if not (min(values) >= -1e-14 and max(values) <= 0.01 * (1 + 1e-6)):
         fail(f"case 1: {column} leaves [0, 0.01] along the {probe}")
 FLOW_ONLY = ("Transport/Enabled=false", "Time/End time=1",
              "Time/Time step=1")
