@@ -54,6 +54,10 @@ long_tests=(
   # Added 2026-11-28: Berre's case 4 three times on 41,481 tetrahedra
   # (Release 44 s); 3D flow on gmsh meshes stays through berre_benchmarks.
   polyfrac/berre_case_4
+  # Added 2026-11-29: the displaced fault (Release 70 s, most of it the
+  # failed Newton attempts past the slip-weakening instability); slip
+  # weakening stays in Debug through the nucleation scene.
+  polyfrac/displaced_fault
   # Release 2.5 s: the slip scene's step 0 and step 1 four times; the
   # equilibrium start stays in Debug through poromechanics_2d_slip.
   app/equilibrium_start_01

@@ -179,10 +179,9 @@ namespace PolyFrac
       return {};
     out << "Equilibrium at t = 0:" << std::endl;
     contact.set_loads(0, Vector<double>());
-    contact.solve(state, out);
+    contact.solve_start(state, out);
     if (prm.output.print_timings)
       contact.print_condensation_times(out);
-    contact.check_start(state);
     StepReport report;
     report.newton_iterations = contact.n_newton_iterations();
     summarise_contact_states(*discretization.geometry,

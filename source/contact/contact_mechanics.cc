@@ -262,7 +262,8 @@ namespace PolyFrac
     const double b = beta[i];
     // The slip of the step and the slip path at x.
     const Tensor<1, dim> step_slip = tangential_part(j - j_prev);
-    const double         slip      = previous_slip[i] + step_slip.norm();
+    const double         slip =
+      previous_slip[i] + (slip_path_frozen ? 0. : step_slip.norm());
 
     // b_n, b_τ and the threshold g of §6.
     const double   b_n = lambda[0] + b * j[0];
@@ -367,7 +368,9 @@ namespace PolyFrac
             face.M_jump[d][0]   = -slope_n * b * hat[d];
           }
         if (const double slope_s =
-              friction->slip_bound_slip_derivative(i, b_n, slip);
+              slip_path_frozen ?
+                0. :
+                friction->slip_bound_slip_derivative(i, b_n, slip);
             slope_s != 0 && step_slip_norm > 0)
           for (unsigned int e = 1; e < dim; ++e)
             face.M_jump[d][e] -=
@@ -1121,8 +1124,20 @@ namespace PolyFrac
 
   template <int dim>
   void
-  ContactMechanics<dim>::check_start(const MechanicalState<dim> &state) const
+  ContactMechanics<dim>::solve_start(MechanicalState<dim> &state,
+                                     std::ostream         &out)
   {
+    slip_path_frozen = true;
+    try
+      {
+        solve(state, out);
+      }
+    catch (...)
+      {
+        slip_path_frozen = false;
+        throw;
+      }
+    slip_path_frozen = false;
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
         const double allowed = friction->maximum_slip_increment(i, 0.);
@@ -1134,12 +1149,12 @@ namespace PolyFrac
                  << geometry.faces[network.fracture_faces[i].face].centroid
                  << ") by " << state.face_slip(i) << ", more than the "
                  << allowed << " that " << friction->name()
-                 << " allows a step: Newton, started from the unloaded "
-                    "state, may have found a weakened equilibrium that a "
-                    "load rising from zero would not reach. Start the "
-                    "loads that change in time at values the faces carry "
-                    "without slipping (e.g. a Fractures/Traction that is 0 "
-                    "at t = 0) and let the time steps bring them on.";
+                 << " allows a step, at its bound without weakening: the "
+                    "loads at t = 0 drive the fault past its peak before "
+                    "any step. Start the loads that change in time at "
+                    "values the faces carry without slipping (e.g. a "
+                    "Fractures/Traction that is 0 at t = 0) and let the "
+                    "time steps bring them on.";
             AssertThrow(false, ExcMessage(what.str()));
           }
       }

@@ -715,15 +715,15 @@ CASES = {
             "Contact", Number_of_load_steps="3",
             **{"Quasi-static time steps": "true"})}),
     "weakened_start_equilibrium": case(
-        "slip weakening in quasi-static steps with a fault traction near the "
-        "peak already at t = 0 (Newton from the unloaded state found a "
-        "weakened equilibrium, 0.6 mm of slip, that loading would not reach)",
+        "slip weakening in quasi-static steps with a fault traction above "
+        "the static peak already at t = 0 (0.5 MPa above it at x = 0: the "
+        "start, at the static bound, slips more than a step may)",
         ["The equilibrium at t = 0 slips fracture face", "more than the "
          "0.00025 that linear slip weakening allows a step", "a Fractures/"
          "Traction that is 0 at t = 0"],
         files={"scene.prm": NUCLEATION + section(
             "Fractures", Segments="-50, 0 : 50, 0",
-            Traction="0.9e6*exp(-x^2/400); 0")},
+            Traction="1.5e6*exp(-x^2/400); 0")},
         base="", stage="level"),
     "quasi_static_steps_under_elasticity": case(
         "`Quasi-static time steps = true` under `Model = elasticity`",

@@ -186,15 +186,18 @@ namespace PolyFrac
     restore(const MechanicalState<dim> &state);
 
     /**
-     * Throws, saying what to do, if @p state, the equilibrium of a first
-     * solve() from the unloaded state, has slipped a face by more than the
-     * friction law allows a quasi-static step
+     * The equilibrium at t = 0 of a quasi-static run under the loads of the
+     * last set_loads(): solve() from @p state with every slip bound taken
+     * at the slip path of @p state (no slip yet: a slip-weakening law's
+     * static coefficient), so that Newton, whose first iterates slip
+     * freely, cannot settle on a weakened equilibrium that a load rising
+     * from zero would not reach. Throws, saying what to do, if a face then
+     * slips by more than the friction law allows a quasi-static step
      * (FrictionLaw::maximum_slip_increment(), finite for weakening laws):
-     * Newton, started from zero, may then have found a weakened equilibrium
-     * that a load rising from zero would not reach.
+     * the in-situ loads alone would drive the fault past its peak.
      */
     void
-    check_start(const MechanicalState<dim> &state) const;
+    solve_start(MechanicalState<dim> &state, std::ostream &out);
 
     /**
      * The loads and Dirichlet data at time @p t, plus @p additional_load on
@@ -596,6 +599,9 @@ namespace PolyFrac
     Vector<double> solution, previous_step;
     /** The slip path s_σ per fracture face at #previous_step. */
     std::vector<double> previous_slip;
+    /** Whether the slip bounds are taken at #previous_slip, not at the
+     * slip path of the iterate (solve_start()). */
+    bool slip_path_frozen = false;
     /** The contact states of the last converged load step. */
     ContactStates states;
     /** Multipliers and states to start from (start_from()). */
