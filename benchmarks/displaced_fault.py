@@ -55,7 +55,7 @@ UP_DIP = (COT / math.hypot(COT, 1), 1 / math.hypot(COT, 1))
 # None: the last equilibrium, where the run found the quasi-static
 # instability; and the most levels it runs (slip weakening: each failed
 # Newton past the instability takes its 50 iterations before the step is
-# halved, 6.4 min on level 1).
+# halved, 196 s on level 1).
 SCENES = {
     "static": ("displaced-fault-static.prm", False, {
         25.0: (("static-slip-25MPa.csv", "slip_m"),

@@ -54,7 +54,7 @@ long_tests=(
   # Added 2026-11-28: Berre's case 4 three times on 41,481 tetrahedra
   # (Release 44 s); 3D flow on gmsh meshes stays through berre_benchmarks.
   polyfrac/berre_case_4
-  # Added 2026-11-29: the displaced fault (Release 70 s, most of it the
+  # Added 2026-11-29: the displaced fault (Release 34 s, most of it the
   # failed Newton attempts past the slip-weakening instability); slip
   # weakening stays in Debug through the nucleation scene.
   polyfrac/displaced_fault

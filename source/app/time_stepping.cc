@@ -54,21 +54,31 @@ namespace PolyFrac
 
 
 
+  bool
+  TimeStepping::may_cut() const
+  {
+    return cuts_in_a_row < max_cuts &&
+           time.get_next_step_size() / 2 >=
+             nominal_step / std::pow(2., max_cuts) * (1 - landing_tolerance);
+  }
+
+
+
   void
   TimeStepping::cut(const std::string &failure, std::ostream &out)
   {
-    ++cuts_in_a_row;
     std::ostringstream what;
     what << "The step from t = " << time.get_current_time()
          << " to t = " << time.get_next_time() << " failed: " << failure;
-    AssertThrow(cuts_in_a_row <= max_cuts,
-                ExcMessage(what.str() +
-                           " It failed after halving the time "
-                           "step " +
+    AssertThrow(may_cut(),
+                ExcMessage(what.str() + " It failed after halving the time " +
+                           "step " + std::to_string(max_cuts) +
+                           " times, or at a step 2^" +
                            std::to_string(max_cuts) +
-                           " times; "
-                           "the last converged state, at the start of this "
-                           "step, is in the output files."));
+                           " times shorter than the level's; the last "
+                           "converged state, at the start of this step, is "
+                           "in the output files."));
+    ++cuts_in_a_row;
     out << what.str() << " Halving the time step." << std::endl;
     planned_step = time.get_next_step_size() / 2;
     plan_next_step();

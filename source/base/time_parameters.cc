@@ -32,8 +32,11 @@ namespace PolyFrac
                       "(at most half of Nonlinear solver/Maximum coupling "
                       "iterations), the next step is 1.5 times longer, up to "
                       "Maximum time step; a failed step is halved and the "
-                      "step grows again only after an easy one. The time "
-                      "series lists the cuts of each step.");
+                      "step grows again only after an easy one. No step "
+                      "shorter than Time step/2^10 is tried: the run stops "
+                      "(or, at a quasi-static instability, the level ends) "
+                      "when one fails. The time series lists the cuts of "
+                      "each step.");
     prm.declare_entry("Maximum time step",
                       "0",
                       Patterns::Double(0),

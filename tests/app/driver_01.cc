@@ -7,13 +7,17 @@
 // is the exact implicit Euler value), the cuts column counts the halvings of
 // each step, the Newton iterations are summed over the steps, the model's cell
 // field reaches the VTU output, and a model that never converges stops the run
-// with a message naming what was tried.
+// with a message naming what was tried. Adaptive steps towards a time that no
+// step can pass (a barrier, as a quasi-static instability is) stop once a step
+// 2^10 times shorter than the nominal one fails, within that step of the
+// barrier, instead of creeping towards it in ever shorter steps.
 
 #include <polyfrac/app/simulator.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "../tests.h"
@@ -24,9 +28,12 @@ using namespace PolyFrac;
 class Decay : public Model<2>
 {
 public:
-  Decay(const LevelDiscretization<2> &discretization, const double largest_step)
+  Decay(const LevelDiscretization<2> &discretization,
+        const double                  largest_step,
+        const double barrier = std::numeric_limits<double>::infinity())
     : discretization(discretization)
     , largest_step(largest_step)
+    , barrier(barrier)
   {}
 
   bool
@@ -39,12 +46,12 @@ public:
   step(const double t_old, const double t_new, std::ostream &out) override
   {
     StepReport report;
-    if (t_new - t_old > largest_step)
+    if (t_new - t_old > largest_step || t_new > barrier)
       {
         report.converged = false;
         std::ostringstream failure;
-        failure << "the step is longer than " << largest_step
-                << " (the test's rule).";
+        failure << "the step is longer than " << largest_step << " or passes "
+                << barrier << " (the test's rule).";
         report.failure = failure.str();
         return report;
       }
@@ -91,7 +98,7 @@ public:
 private:
   double                        y = 1;
   const LevelDiscretization<2> &discretization;
-  const double                  largest_step;
+  const double                  largest_step, barrier;
 };
 
 
@@ -207,5 +214,46 @@ main()
                     message.str().find("the test's rule") != std::string::npos,
                   ExcMessage("Unexpected message: " + message.str()));
       std::cout << "Never converging: stopped with" << message.str();
+    }
+
+  // Adaptive steps of 0.01 towards a barrier at t = 0.0123: the run stops
+  // at a failed step of 0.01/2^10 or longer, within 2 x 0.01/2^10 of the
+  // barrier, after at most 20 tries that failed (10 measured; 63 before steps
+  // shorter than 0.01/2^10 were refused).
+  prm.output.directory = "driver_01-results-barrier";
+  prm.time.time_step   = 0.01;
+  prm.time.adaptive    = true;
+  Simulator<2>       barred(prm,
+                      [](const Parameters &, const LevelDiscretization<2> &d) {
+                        return std::make_unique<Decay>(d, 1., 0.0123);
+                      });
+  std::ostringstream barred_log;
+  try
+    {
+      barred.run(barred_log);
+      AssertThrow(false, ExcMessage("A barrier did not stop the run."));
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::ostringstream message;
+      e.print_info(message);
+      const std::string log   = barred_log.str();
+      unsigned int      tries = 0;
+      for (std::size_t at = log.find("Halving"); at != std::string::npos;
+           at             = log.find("Halving", at + 1))
+        ++tries;
+      const std::size_t last = log.rfind("step to ");
+      const double      reached =
+        std::stod(log.substr(last + 8, log.find(':', last) - last - 8));
+      AssertThrow(message.str().find("2^10 times shorter") !=
+                      std::string::npos &&
+                    tries <= 20 && reached <= 0.0123 &&
+                    reached >= 0.0123 - 2 * 0.01 / 1024,
+                  ExcMessage("Barrier: " + std::to_string(tries) +
+                             " failed tries, last step to " +
+                             std::to_string(reached) + "; " + message.str()));
+      std::cout << "Barrier at 0.0123: stopped after " << tries
+                << " failed tries, the last step landing at " << reached
+                << ", asserted" << std::endl;
     }
 }

@@ -102,16 +102,16 @@ namespace PolyFrac
       plan_next_step();
     }
 
-    /** Whether the step that just failed may be cut again (fewer than
-     * max_cuts cuts in a row before it). */
+    /** Whether the step that just failed may be cut again: fewer than
+     * max_cuts cuts in a row before it, and half of it no shorter than the
+     * level's step divided by 2^max_cuts (adaptive steps that grew again
+     * after a cut would otherwise creep towards a load that no step can
+     * pass, e.g. a quasi-static instability, in ever shorter steps). */
     bool
-    may_cut() const
-    {
-      return cuts_in_a_row < max_cuts;
-    }
+    may_cut() const;
 
     /** Halves the next step after a failed one (whose @p failure is
-     * printed to @p out); throws after max_cuts cuts in a row. */
+     * printed to @p out); throws if may_cut() does not hold. */
     void
     cut(const std::string &failure, std::ostream &out);
 
