@@ -89,27 +89,23 @@ def friction(delta, weakening):
     return MU_S - (MU_S - MU_D) * min(delta / D_C, 1.0)
 
 
-def last_time(path):
-    """The last output time of the probe file PATH."""
+def probe_times(path):
+    """The rows of the line probe file PATH by output time, read once."""
+    times = {}
     with open(path) as file:
-        return max(float(r["time"]) for r in csv.DictReader(file))
+        for r in csv.DictReader(file):
+            times.setdefault(float(r["time"]), []).append(r)
+    return times
 
 
-def fault_profiles(path, time, weakening):
+def fault_profiles(times, time, weakening, path):
     """y, slip (vertical component) and Coulomb stress along the fault at
-    TIME from the line probe file PATH; exits if a point has no fracture
-    value."""
-    with open(path) as file:
-        rows = [r for r in csv.DictReader(file)
-                if abs(float(r["time"]) - time) <= 1e-12 * abs(time)]
+    TIME from TIMES, the rows of the probe file PATH by time
+    (probe_times()); exits if a point has no fracture value."""
+    rows = times.get(time, [])
     if not rows or any(r["normal_traction"] == "" for r in rows):
         raise SystemExit(f"{path}: no fault values at t = {time}")
-    with open(path) as file:
-        first = [r for r in csv.DictReader(file) if float(r["time"]) == 0]
-    if len(rows) != len(first):
-        raise SystemExit(f"{path}: {len(rows)} probe points at t = {time}, "
-                         f"{len(first)} at t = 0")
-    middle = first[len(first) // 2]
+    middle = times[0.0][len(times[0.0]) // 2]
     sense = math.copysign(1.0, float(middle["tangential_traction_x"]) *
                           UP_DIP[0] + float(middle["tangential_traction_y"]) *
                           UP_DIP[1])
@@ -166,11 +162,12 @@ def compare(arguments):
         for level in levels:
             path = os.path.join(directory,
                                 f"line-fault-level-{level['level']}.csv")
+            times = probe_times(path)
+            reached = max(times)
             for dp, ((slip_file, slip_column),
                      (coulomb_file, coulomb_column)) in depletions.items():
-                reached = last_time(path)
                 y, slip, coulomb = fault_profiles(
-                    path, reached if dp is None else dp, weakening)
+                    times, reached if dp is None else dp, weakening, path)
                 slip_ref = reference_at(y, slip_file, slip_column, True)
                 coulomb_ref = reference_at(y, coulomb_file, coulomb_column)
                 rows.append({

@@ -203,9 +203,10 @@ namespace PolyFrac
   PatchData<dim, dim>
   FlowModel<dim>::matrix_output() const
   {
-    std::vector<OutputField> fields = {
-      {"pressure", flow.cell_pressures(pressure)},
-      vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))};
+    const std::vector<double> p      = flow.cell_pressures(pressure);
+    std::vector<OutputField>  fields = {
+       {"pressure", p},
+       vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))};
     if (transport)
       fields.push_back(
         {"concentration", transport->cell_concentrations(concentration)});
@@ -216,7 +217,7 @@ namespace PolyFrac
                                nullptr,
                                fields,
                                {},
-                               {pressure_reconstruction(flow, pressure)});
+                               {pressure_reconstruction(flow, pressure, p)});
   }
 
 
@@ -245,10 +246,12 @@ namespace PolyFrac
 
   template <int dim>
   AffineOutputField<dim>
-  pressure_reconstruction(const Flow<dim> &flow, const Vector<double> &pressure)
+  pressure_reconstruction(const Flow<dim>           &flow,
+                          const Vector<double>      &pressure,
+                          const std::vector<double> &cell_pressures)
   {
     return {"pressure_linear",
-            flow.cell_pressures(pressure),
+            cell_pressures,
             flow.cell_pressure_gradients(pressure)};
   }
 
@@ -307,8 +310,12 @@ namespace PolyFrac
 
   template class FlowModel<2>;
   template AffineOutputField<2>
-  pressure_reconstruction(const Flow<2> &, const Vector<double> &);
+  pressure_reconstruction(const Flow<2> &,
+                          const Vector<double> &,
+                          const std::vector<double> &);
   template AffineOutputField<3>
-  pressure_reconstruction(const Flow<3> &, const Vector<double> &);
+  pressure_reconstruction(const Flow<3> &,
+                          const Vector<double> &,
+                          const std::vector<double> &);
   template class FlowModel<3>;
 } // namespace PolyFrac

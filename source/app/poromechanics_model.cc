@@ -1036,7 +1036,7 @@ namespace PolyFrac
        {"porosity", porosity},
        vector_field<dim>("darcy_velocity", flow.darcy_velocities(pressure))},
       biot_pressure,
-      {pressure_reconstruction(flow, pressure)});
+      {pressure_reconstruction(flow, pressure, p)});
   }
 
 

@@ -26,7 +26,6 @@ levels):
 usage: displaced_fault.py POLYFRAC SOURCE_DIR WORK_DIR
 Exits non-zero on the first failed check.
 """
-import csv
 import os
 import subprocess
 import sys
@@ -47,33 +46,33 @@ def fail(message):
 
 def static_differences(name, *settings):
     """The Coulomb and slip differences, the largest slip (m) at 25 MPa
-    and the probe file of the static scene run with SETTINGS into
-    WORK/NAME."""
+    and the probe's rows by time of the static scene run with SETTINGS
+    into WORK/NAME."""
     directory = os.path.join(work, name)
     flemisch.run_scene(program, "displaced-fault-static.prm", directory, 1,
                        *STATIC_ONLY, *settings)
     path = os.path.join(directory, "line-fault-level-0.csv")
-    y, slip, coulomb = displaced_fault.fault_profiles(path, 25.0, False)
+    times = displaced_fault.probe_times(path)
+    y, slip, coulomb = displaced_fault.fault_profiles(times, 25.0, False,
+                                                      path)
     slip_ref = displaced_fault.reference_at(y, "static-slip-25MPa.csv",
                                             "slip_m", True)
     coulomb_ref = displaced_fault.reference_at(y, "static-coulomb.csv",
                                                "coulomb_post_25MPa_Pa")
     return (displaced_fault.relative_l2(y, coulomb, coulomb_ref),
             displaced_fault.relative_l2(y, slip, slip_ref), max(slip),
-            path)
+            times)
 
 
-coulomb, slip, largest, path = static_differences("static")
+coulomb, slip, largest, times = static_differences("static")
 print(f"static, 25 MPa: differences Coulomb {coulomb:.4f}, slip {slip:.4f}; "
       f"largest slip {1e3 * largest:.3f} mm")
 if not (coulomb <= COULOMB_BOUND and slip <= SLIP_BOUND and
         abs(largest - 8.62e-3) <= 0.12 * 8.62e-3):
     fail(f"static: differences {coulomb}, {slip} (bounds {COULOMB_BOUND}, "
          f"{SLIP_BOUND}), largest slip {largest}")
-with open(path) as file:
-    at_rest = max(abs(float(r[c])) for r in csv.DictReader(file)
-                  if float(r["time"]) == 0
-                  for c in ("displacement_x", "displacement_y"))
+at_rest = max(abs(float(r[c])) for r in times[0.0]
+              for c in ("displacement_x", "displacement_y"))
 print(f"t = 0: largest displacement {at_rest:.3g} m")
 if not at_rest <= 1e-5:
     fail(f"the rock moves before the depletion ({at_rest} m)")
@@ -100,8 +99,8 @@ print(result.stdout[-600:])
 if result.returncode != 0 or "Quasi-static instability" not in result.stdout:
     fail(f"slip weakening: exit {result.returncode}, no instability "
          f"reported\n{result.stderr}")
-reached = displaced_fault.last_time(
-    os.path.join(directory, "line-fault-level-0.csv"))
+reached = max(displaced_fault.probe_times(
+    os.path.join(directory, "line-fault-level-0.csv")))
 print(f"slip weakening: last equilibrium at {reached:.4f} MPa")
 if not INSTABILITY_RANGE[0] <= reached <= INSTABILITY_RANGE[1]:
     fail(f"slip weakening: the instability at {reached} MPa, outside "

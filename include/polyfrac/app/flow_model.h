@@ -125,14 +125,16 @@ namespace PolyFrac
   flow_entries();
 
   /** `pressure_linear`, the output field of the models with flow: the
-   * cell pressure p_K of @p pressure with its HFV gradient
-   * (Flow::cell_pressure_gradients()), affine over each polytope, point
-   * data that line probes interpolate (exact for an affine pressure),
-   * beside the constant `pressure`. */
+   * cell pressures @p cell_pressures (Flow::cell_pressures() of
+   * @p pressure, which the models write as `pressure` too) with the HFV
+   * gradients of @p pressure (Flow::cell_pressure_gradients()), affine over
+   * each polytope, point data that line probes interpolate (exact for an
+   * affine pressure). */
   template <int dim>
   AffineOutputField<dim>
-  pressure_reconstruction(const Flow<dim>      &flow,
-                          const Vector<double> &pressure);
+  pressure_reconstruction(const Flow<dim>           &flow,
+                          const Vector<double>      &pressure,
+                          const std::vector<double> &cell_pressures);
 } // namespace PolyFrac
 
 #endif
