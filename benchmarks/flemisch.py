@@ -118,8 +118,9 @@ def line_error(path, field, reference):
 
 
 def run_scene(program, scene, directory, levels, *settings):
-    """Runs prm/benchmarks/SCENE on LEVELS levels into DIRECTORY; returns the
-    rows of its convergence.csv. Exits naming the scene if polyfrac fails."""
+    """Runs prm/benchmarks/SCENE on LEVELS levels into DIRECTORY (its
+    standard output into DIRECTORY/output.txt); returns the rows of its
+    convergence.csv. Exits naming the scene if polyfrac fails."""
     arguments = [program, os.path.join(ROOT, "prm", "benchmarks", scene),
                  "--set", "Output/Output directory=" + directory,
                  "--set", f"Convergence study/Number of refinement "
@@ -130,6 +131,8 @@ def run_scene(program, scene, directory, levels, *settings):
     result = subprocess.run(arguments, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"{scene}: exit {result.returncode}\n{result.stderr}")
+    with open(os.path.join(directory, "output.txt"), "w") as file:
+        file.write(result.stdout)
     with open(os.path.join(directory, "convergence.csv")) as file:
         return list(csv.DictReader(file))
 

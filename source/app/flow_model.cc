@@ -64,7 +64,8 @@ namespace PolyFrac
   FlowModel<dim>::save_state(std::ostream &out) const
   {
     boost::archive::binary_oarchive archive(out);
-    archive << pressure << run_volumes << time << concentration << run_tracer;
+    archive << pressure << run_volumes << time << concentration << run_tracer
+            << run_defect_room;
   }
 
 
@@ -74,7 +75,8 @@ namespace PolyFrac
   FlowModel<dim>::load_state(std::istream &in)
   {
     boost::archive::binary_iarchive archive(in);
-    archive >> pressure >> run_volumes >> time >> concentration >> run_tracer;
+    archive >> pressure >> run_volumes >> time >> concentration >> run_tracer >>
+      run_defect_room;
   }
 
 
@@ -124,8 +126,10 @@ namespace PolyFrac
     FluidVolumes tracer;
     if (transport)
       {
-        tracer = transport->step(data, pressure, concentration);
+        const auto result = transport->step(data, pressure, concentration);
+        tracer            = result.amounts;
         run_tracer += tracer;
+        run_defect_room = std::max(run_defect_room, result.defect_room);
       }
     last_outflows        = PolyFrac::boundary_outflows(volumes,
                                                 transport ? &tracer : nullptr,
@@ -166,7 +170,11 @@ namespace PolyFrac
         out << "Tracer amounts from t = 0 to " << time
             << " (concentration times volume): ";
         run_tracer.print(out);
-        out << std::endl;
+        out << std::endl
+            << "Tracer within the discrete maximum principle's bounds at "
+               "every step: the range of its initial, inflow and source "
+               "concentrations, widened by the fluxes' defect by at most "
+            << run_defect_room << " of it" << std::endl;
         out.precision(precision);
       }
   }

@@ -265,7 +265,7 @@ namespace PolyFrac
       for (unsigned int p = 0; p < data.patches.size(); ++p)
         {
           const unsigned int group = group_of(static_cast<unsigned int>(
-            std::round(data.patches[p].data(row, 0))));
+            std::round(data.point_values[p](row, 0))));
           const double       size  = measure(shape_of(data.patches[p]));
           sums[group * width] += size;
           for (unsigned int c = 0; c < components.size(); ++c)
@@ -325,7 +325,7 @@ namespace PolyFrac
               for (unsigned int v = 0; v < corners.size(); ++v)
                 row[components.size() + c] +=
                   weights[v] *
-                  data.patches[p].data(point_components[c], corners[v]);
+                  data.point_values[p](point_components[c], corners[v]);
             break;
           }
     std::vector<unsigned int> first(points.size());
@@ -410,7 +410,6 @@ namespace PolyFrac
              << length * i / (points.size() - 1.);
         for (unsigned int d = 0; d < dim; ++d)
           text << "," << points[i][d];
-        text << std::setprecision(9);
         for (const double value : rows[i])
           {
             text << ",";

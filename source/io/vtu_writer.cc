@@ -49,34 +49,36 @@ namespace PolyFrac
     }
 
     /**
-     * A patch of @p type with corners @p vertices (deal.II order) and room
-     * for @p n_components data components at each of them.
+     * Appends to @p data a patch of @p type with corners @p vertices
+     * (deal.II order) and, to PatchData::point_values, room for all the
+     * data components of @p data at each corner; returns that room.
      */
     template <int dim, int spacedim>
-    DataOutBase::Patch<dim, spacedim>
-    make_patch(const ReferenceCell                &type,
-               const std::vector<Point<spacedim>> &vertices,
-               const unsigned int                  n_components)
+    Table<2, double> &
+    add_patch(PatchData<dim, spacedim>           &data,
+              const ReferenceCell                &type,
+              const std::vector<Point<spacedim>> &vertices)
     {
       DataOutBase::Patch<dim, spacedim> patch;
       patch.reference_cell = type;
       patch.n_subdivisions = 1;
       for (unsigned int v = 0; v < vertices.size(); ++v)
         patch.vertices[v] = vertices[v];
-      patch.data.reinit(n_components, vertices.size());
-      return patch;
+      data.patches.push_back(std::move(patch));
+      data.point_values.emplace_back(data.names.size(), vertices.size());
+      return data.point_values.back();
     }
 
-    /** Sets the components from @p first on to @p values at every vertex. */
-    template <int dim, int spacedim>
+    /** Sets the components from @p first on to @p values at every vertex
+     * of a patch's @p table. */
     void
-    set_constant(DataOutBase::Patch<dim, spacedim> &patch,
-                 const unsigned int                 first,
-                 const std::vector<double>         &values)
+    set_constant(Table<2, double>          &table,
+                 const unsigned int         first,
+                 const std::vector<double> &values)
     {
       for (unsigned int c = 0; c < values.size(); ++c)
-        for (unsigned int v = 0; v < patch.data.n_cols(); ++v)
-          patch.data(first + c, v) = values[c];
+        for (unsigned int v = 0; v < table.n_cols(); ++v)
+          table(first + c, v) = values[c];
     }
 
     /** Appends the components of @p v to @p out. */
@@ -116,22 +118,22 @@ namespace PolyFrac
     }
 
     /**
-     * Orders @p patches along the Hilbert curve through their vertex
-     * averages. Each patch has its own copy of its vertices: in this order
-     * the copies of a vertex mostly fall within the 32 KB window of zlib,
-     * which then stores the points and the displacement of an unstructured
-     * mesh 5 times smaller than in the order of the cells (the gmsh mesh
-     * of prm/b3-penny-3d.prm: 11.2 MB each down to 2.1 MB).
+     * Orders the patches of @p data (and their PatchData::point_values)
+     * along the Hilbert curve through their vertex averages. Each patch has
+     * its own copy of its vertices: in this order the copies of a vertex
+     * mostly fall within the 32 KB window of zlib, which then stores the
+     * points and the displacement of an unstructured mesh 5 times smaller
+     * than in the order of the cells (the gmsh mesh of
+     * prm/b3-penny-3d.prm: 11.2 MB each down to 2.1 MB).
      */
     template <int dim, int spacedim>
     void
-    sort_along_hilbert_curve(
-      std::vector<DataOutBase::Patch<dim, spacedim>> &patches)
+    sort_along_hilbert_curve(PatchData<dim, spacedim> &data)
     {
-      if (patches.empty())
+      if (data.patches.empty())
         return;
       std::vector<Point<spacedim>> centres;
-      for (const auto &patch : patches)
+      for (const auto &patch : data.patches)
         {
           const unsigned int n = patch.reference_cell.n_vertices();
           Point<spacedim>    centre;
@@ -141,18 +143,24 @@ namespace PolyFrac
         }
       const auto index =
         Utilities::inverse_Hilbert_space_filling_curve(centres);
-      std::vector<unsigned int> order(patches.size());
+      std::vector<unsigned int> order(data.patches.size());
       std::iota(order.begin(), order.end(), 0u);
       std::stable_sort(order.begin(),
                        order.end(),
                        [&](const unsigned int a, const unsigned int b) {
                          return index[a] < index[b];
                        });
-      std::vector<DataOutBase::Patch<dim, spacedim>> sorted;
-      sorted.reserve(patches.size());
+      std::vector<DataOutBase::Patch<dim, spacedim>> patches;
+      std::vector<Table<2, double>>                  values;
+      patches.reserve(order.size());
+      values.reserve(order.size());
       for (const unsigned int i : order)
-        sorted.push_back(std::move(patches[i]));
-      patches.swap(sorted);
+        {
+          patches.push_back(std::move(data.patches[i]));
+          values.push_back(std::move(data.point_values[i]));
+        }
+      data.patches.swap(patches);
+      data.point_values.swap(values);
     }
 
     /**
@@ -160,6 +168,9 @@ namespace PolyFrac
      * each patch, to its cell data (the value at a patch's first vertex):
      * each vector or tensor of PatchData::ranges and each other component
      * becomes one PatchData::CellArray, in the order of the components.
+     * The components before @p first stay PatchData::point_values, and the
+     * patches' own data get them rounded to Float32, as DataOutBase writes
+     * them.
      */
     template <int dim, int spacedim>
     void
@@ -194,7 +205,7 @@ namespace PolyFrac
                                                                                 3;
           typename PatchData<dim, spacedim>::CellArray array{name, n, {}};
           array.values.reserve(n * data.patches.size());
-          for (const auto &patch : data.patches)
+          for (const Table<2, double> &table : data.point_values)
             for (unsigned int slot = 0; slot < n; ++slot)
               {
                 // A tensor's slot (i, j) of the 3 x 3 array is component
@@ -205,19 +216,24 @@ namespace PolyFrac
                                        slot < end - begin;
                 const unsigned int c =
                   kind == component_is_part_of_tensor ? i * spacedim + j : slot;
-                array.values.push_back(present ? patch.data(begin + c, 0) :
-                                                 0.f);
+                array.values.push_back(present ? table(begin + c, 0) : 0.);
               }
           data.cell_arrays.push_back(std::move(array));
         }
 
-      for (auto &patch : data.patches)
+      for (unsigned int p = 0; p < data.patches.size(); ++p)
         {
-          Table<2, float> kept(first, patch.data.n_cols());
+          Table<2, double> &table = data.point_values[p];
+          Table<2, double>  kept(first, table.n_cols());
+          auto             &rounded = data.patches[p].data;
+          rounded.reinit(first, table.n_cols());
           for (unsigned int c = 0; c < first; ++c)
-            for (unsigned int v = 0; v < patch.data.n_cols(); ++v)
-              kept(c, v) = patch.data(c, v);
-          patch.data.swap(kept);
+            for (unsigned int v = 0; v < table.n_cols(); ++v)
+              {
+                kept(c, v)    = table(c, v);
+                rounded(c, v) = static_cast<float>(table(c, v));
+              }
+          table.swap(kept);
         }
       data.names.resize(first);
       data.ranges.erase(std::remove_if(data.ranges.begin(),
@@ -259,7 +275,6 @@ namespace PolyFrac
                         field.n_components == 1 ? component_is_scalar :
                                                   component_is_part_of_vector});
     PatchData<dim, dim> data           = layout<dim, dim>(fields);
-    const unsigned int  n_components   = data.names.size();
     const unsigned int  first_affine   = mechanics ? dim : 0;
     const unsigned int  first_constant = first_affine + affine_fields.size();
     for (unsigned int a = 0; a < affine_fields.size(); ++a)
@@ -307,8 +322,8 @@ namespace PolyFrac
         std::vector<Point<dim>> vertices;
         for (const unsigned int v : fine.vertices)
           vertices.push_back(mesh.vertices[v]);
-        auto patch = make_patch<dim, dim>(fine.type, vertices, n_components);
-        const auto &list = mesh.cells[K].vertices;
+        Table<2, double> &patch = add_patch(data, fine.type, vertices);
+        const auto       &list  = mesh.cells[K].vertices;
         for (unsigned int i = 0; mechanics && i < fine.vertices.size(); ++i)
           {
             const unsigned int v = fine.vertices[i];
@@ -318,18 +333,17 @@ namespace PolyFrac
                 values[it - list.begin()] :
                 local->potential(values, mesh.vertices[v]);
             for (unsigned int d = 0; d < dim; ++d)
-              patch.data(d, i) = u[d];
+              patch(d, i) = u[d];
           }
         for (unsigned int a = 0; a < affine_fields.size(); ++a)
           for (unsigned int i = 0; i < fine.vertices.size(); ++i)
-            patch.data(first_affine + a, i) =
+            patch(first_affine + a, i) =
               affine_fields[a].values[K] +
               affine_fields[a].gradients[K] *
                 (mesh.vertices[fine.vertices[i]] - geometry.cells[K].centroid);
         set_constant(patch, first_constant, cell_values);
-        data.patches.push_back(std::move(patch));
       }
-    sort_along_hilbert_curve(data.patches);
+    sort_along_hilbert_curve(data);
     // `polytope` stays point data, as `fracture` does in fracture_patches().
     move_to_cell_data(data, first_constant + 1);
     return data;
@@ -368,8 +382,7 @@ namespace PolyFrac
                         field.n_components,
                         field.n_components == 1 ? component_is_scalar :
                                                   component_is_part_of_vector});
-    PatchData<dim - 1, dim> data         = layout<dim - 1, dim>(fields);
-    const unsigned int      n_components = data.names.size();
+    PatchData<dim - 1, dim> data = layout<dim - 1, dim>(fields);
 
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       if (dofs.is_locally_owned_fracture_face(i))
@@ -401,14 +414,9 @@ namespace PolyFrac
           for (const auto &[type, vertices] :
                face_pieces(geometry.mesh.vertices,
                            geometry.mesh.faces[ff.face].vertices))
-            {
-              auto patch =
-                make_patch<dim - 1, dim>(type, vertices, n_components);
-              set_constant(patch, 0, values);
-              data.patches.push_back(std::move(patch));
-            }
+            set_constant(add_patch(data, type, vertices), 0, values);
         }
-    sort_along_hilbert_curve(data.patches);
+    sort_along_hilbert_curve(data);
     // `fracture` stays point data: DataOutBase (9.4) counts the points of
     // a triangle patch by the columns of its data, none without a row.
     move_to_cell_data(data, 1);
@@ -498,7 +506,9 @@ namespace PolyFrac
         element << "    <DataArray type=\"Float32\" Name=\"" << array.name
                 << "\"" << number_of_components(array.n_components)
                 << " format=\"binary\">\n"
-                << compressed_base64(array.values, flags.compression_level)
+                << compressed_base64(std::vector<float>(array.values.begin(),
+                                                        array.values.end()),
+                                     flags.compression_level)
                 << "\n    </DataArray>\n";
       element << "  </CellData>\n";
       return element.str();
@@ -551,8 +561,8 @@ namespace PolyFrac
             if (!std::isfinite(patch.data(c, v)))
               fail(data.names[c]);
       for (const auto &array : data.cell_arrays)
-        for (const float value : array.values)
-          if (!std::isfinite(value))
+        for (const double value : array.values)
+          if (!std::isfinite(static_cast<float>(value)))
             fail(array.name);
     }
 

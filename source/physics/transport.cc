@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -41,6 +42,7 @@ namespace PolyFrac
     explicit System(const unsigned int n)
       : rows(n)
       , rhs(n)
+      , entering(n)
     {}
 
     /** Adds @p value to the entry (@p i, @p j). */
@@ -84,6 +86,7 @@ namespace PolyFrac
       else
         {
           rhs(from) -= F * c_in;
+          enter(from, -F, c_in);
           inflow -= F * c_in;
           inflow_by_boundary[boundary] -= F * c_in;
         }
@@ -97,6 +100,7 @@ namespace PolyFrac
       if (q > 0)
         {
           rhs(k) += q * c_source;
+          enter(k, q, c_source);
           injected += q * c_source;
         }
       else if (q < 0)
@@ -104,6 +108,56 @@ namespace PolyFrac
           add(k, k, -q);
           extracted.emplace_back(k, -q);
         }
+    }
+
+    /** The right-hand side's term @p coefficient times @p c of row @p i:
+     * tracer of concentration @p c that enters unknown @p i (the storage
+     * of the last step, an inflow, a source). */
+    void
+    enter(const unsigned int i, const double coefficient, const double c)
+    {
+      entering(i) += coefficient;
+      lowest  = std::min(lowest, c);
+      highest = std::max(highest, c);
+    }
+
+    /**
+     * The discrete maximum principle of the system, checked on its
+     * solution @p c: the matrix A is an M-matrix (positive diagonal,
+     * non-positive off-diagonal entries, dominant columns: each flux leaves
+     * the column of its upstream unknown), so with the fluxes' defect d =
+     * A 1 − entering (what each unknown's outflows exceed its inflows by;
+     * zero if the fluxes balance exactly), z = A⁻¹ d and [m, M] the range
+     * of the entering concentrations, m (1 − z_i) ≤ c_i ≤ M (1 − z_i).
+     * Returns how far these bounds reach beyond [m, M], relative to
+     * max(|m|, |M|) (0 when the fluxes balance; their round-off or the
+     * fluid a compressible flow stores makes it positive), or, if @p c
+     * leaves them by more than 1e-12 of max(|m|, |M|) (the solve's
+     * round-off), −1.
+     */
+    double
+    defect_room(const Vector<double> &c) const
+    {
+      Vector<double> d(rows.size());
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        {
+          d(i) = -entering(i);
+          for (const auto &entry : rows[i])
+            d(i) += entry.second;
+        }
+      const Vector<double> z = solve(d);
+      const double scale     = std::max(std::abs(lowest), std::abs(highest));
+      double       below = lowest, above = highest;
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        {
+          const double lower = lowest * (1 - z(i)),
+                       upper = highest * (1 - z(i));
+          if (c(i) > upper + 1e-12 * scale || c(i) < lower - 1e-12 * scale)
+            return -1;
+          below = std::min(below, lower);
+          above = std::max(above, upper);
+        }
+      return scale > 0 ? std::max(lowest - below, above - highest) / scale : 0;
     }
 
     /** Gives every row without a diagonal (an edge that nothing leaves)
@@ -116,10 +170,17 @@ namespace PolyFrac
           rows[i][i] = 1;
     }
 
-    /** The solution of the system by UMFPACK. */
+    /** The solution of the system with the right-hand side @p b by
+     * UMFPACK (the first call factorises the matrix). */
     Vector<double>
-    solve() const
+    solve(const Vector<double> &b) const
     {
+      if (direct.n() > 0)
+        {
+          Vector<double> solution = b;
+          direct.solve(solution);
+          return solution;
+        }
       DynamicSparsityPattern dsp(rows.size());
       for (unsigned int i = 0; i < rows.size(); ++i)
         for (const auto &entry : rows[i])
@@ -130,11 +191,8 @@ namespace PolyFrac
       for (unsigned int i = 0; i < rows.size(); ++i)
         for (const auto &[j, value] : rows[i])
           matrix.set(i, j, value);
-      SparseDirectUMFPACK direct;
       direct.initialize(matrix);
-      Vector<double> solution = rhs;
-      direct.solve(solution);
-      return solution;
+      return solve(b);
     }
 
     /** The rate at which @p c leaves through the boundary and the sinks. */
@@ -169,12 +227,20 @@ namespace PolyFrac
       unsigned int boundary;
     };
 
-    std::vector<std::map<unsigned int, double>>  rows;
-    Vector<double>                               rhs;
+    std::vector<std::map<unsigned int, double>> rows;
+    Vector<double>                              rhs;
+    /** The coefficients of the right-hand side's terms (enter()). */
+    Vector<double> entering;
+    /** The range of the concentrations that enter (enter()). */
+    double lowest  = std::numeric_limits<double>::max(),
+           highest = std::numeric_limits<double>::lowest();
     std::vector<Outflow>                         outflow;
     std::vector<std::pair<unsigned int, double>> extracted;
     std::map<unsigned int, double>               inflow_by_boundary;
     double                                       inflow = 0, injected = 0;
+
+  private:
+    mutable SparseDirectUMFPACK direct;
   };
 
 
@@ -305,7 +371,7 @@ namespace PolyFrac
 
 
   template <int dim>
-  FluidVolumes
+  typename Transport<dim>::StepResult
   Transport<dim>::step(const FlowStepData   &data,
                        const Vector<double> &pressure,
                        Vector<double>       &concentration) const
@@ -318,6 +384,7 @@ namespace PolyFrac
       {
         system.add(k, k, pores[k] / data.time_step);
         system.rhs(k) += pores[k] / data.time_step * concentration(k);
+        system.enter(k, pores[k] / data.time_step, concentration(k));
       }
     const Fluxes F = fluxes(data, pressure);
     add_matrix_fluxes(F, system);
@@ -330,8 +397,9 @@ namespace PolyFrac
     system.close_empty_rows();
 
     const Vector<double> previous = concentration;
-    concentration                 = system.solve();
-    return checked_amounts(data, system, pores, previous, concentration);
+    concentration                 = system.solve(system.rhs);
+    return {checked_amounts(data, system, pores, previous, concentration),
+            checked_room(data, system, concentration)};
   }
 
 
@@ -430,6 +498,28 @@ namespace PolyFrac
                            "its data (Transport/Inflow concentration, Source "
                            "concentration) beyond double precision."));
     return amounts;
+  }
+
+
+
+  template <int dim>
+  double
+  Transport<dim>::checked_room(const FlowStepData   &data,
+                               const System         &system,
+                               const Vector<double> &concentration) const
+  {
+    const double room = system.defect_room(concentration);
+    AssertThrow(room >= 0,
+                ExcMessage("In <" + context.file_name +
+                           ">: the tracer's concentration of the step to t = " +
+                           std::to_string(data.time) +
+                           " leaves the range of its initial, inflow and "
+                           "source concentrations by more than the flow's "
+                           "flux defect allows (the discrete maximum "
+                           "principle of upwinding): the transport's "
+                           "matrix is not an M-matrix, a defect of "
+                           "PolyFrac to report."));
+    return room;
   }
 
 

@@ -111,9 +111,11 @@ namespace PolyFrac
     double       time = 0;
     /** The passive tracer (Transport/Enabled), or none. */
     const std::unique_ptr<const Transport<dim>> transport;
-    /** Its concentrations at the last time reached, and its amounts. */
+    /** Its concentrations at the last time reached, its amounts, and the
+     * largest Transport::StepResult::defect_room of the steps. */
     Vector<double> concentration;
     FluidVolumes   run_tracer;
+    double         run_defect_room = 0;
     /** What the last step let out through each boundary id. */
     std::vector<BoundaryOutflow> last_outflows;
   };

@@ -124,10 +124,10 @@ namespace PolyFrac
    * length per unit thickness) and the mean over it of every component of
    * the cell data of the solution and fracture outputs (the columns of
    * sample_patch_data(); a region's row leaves the fracture columns empty,
-   * a fracture's the matrix columns). The means are of the values written
-   * to the VTU files (single precision). On several ranks the sums over
-   * the ranks' patches. After a step, one row per boundary id (kind
-   * `boundary`): its area (length in 2D) and, in the last two columns,
+   * a fracture's the matrix columns). The means are of the fields in double
+   * precision (the VTU files hold them rounded to Float32). On several ranks
+   * the sums over the ranks' patches. After a step, one row per boundary id
+   * (kind `boundary`): its area (length in 2D) and, in the last two columns,
    * `outflow` and `tracer_outflow`, the rates at which the step let the
    * fluid and the tracer out through it (Model::boundary_outflows(); empty
    * in the other rows).

@@ -36,6 +36,13 @@ namespace PolyFrac
      * shared vertices).
      */
     std::vector<DataOutBase::Patch<dim, spacedim>> patches;
+    /**
+     * The point data of each patch (#names: one row per component, one
+     * column per vertex) in double precision: the patches' own data hold
+     * them rounded to Float32, which is what DataOutBase writes; line
+     * probes and region integrals read these.
+     */
+    std::vector<Table<2, double>> point_values;
     /** One name per data component. */
     std::vector<std::string> names;
     /** First and last component, name and kind of each vector or tensor. */
@@ -54,8 +61,9 @@ namespace PolyFrac
       /** 1 for a scalar, 3 for a vector, 9 for a tensor (2D vectors and
        * tensors padded with zeros, as DataOutBase pads point data). */
       unsigned int n_components;
-      /** The values, patch by patch in the order of #patches. */
-      std::vector<float> values;
+      /** The values, patch by patch in the order of #patches (written as
+       * Float32). */
+      std::vector<double> values;
     };
     /**
      * The fields constant over each patch, written as VTU cell data (so

@@ -50,7 +50,7 @@ namespace PolyFrac
    *   const Transport<dim> transport(prm.transport, prm, geometry, network,
    *                                  edges, flow);
    *   Vector<double> c = transport.initial_concentration();
-   *   amounts += transport.step(data, pressure, c);
+   *   amounts += transport.step(data, pressure, c).amounts;
    * @endcode
    */
   template <int dim>
@@ -72,13 +72,30 @@ namespace PolyFrac
     Vector<double>
     initial_concentration() const;
 
+    /** What one step did. */
+    struct StepResult
+    {
+      /** The amounts of tracer the step moved. */
+      FluidVolumes amounts;
+      /**
+       * How far the fluxes' defect lets the concentration leave the range
+       * [m, M] of its initial, inflow and source values, relative to
+       * max(|m|, |M|): the step checks m (1 − z_i) ≤ c_i ≤ M (1 − z_i),
+       * the discrete maximum principle of upwinding, with z = A⁻¹ d, A the
+       * step's matrix and d_i what the fluxes out of unknown i exceed those
+       * into it by (zero for exact, incompressible fluxes: round-off then,
+       * or the fluid a compressible flow stores).
+       */
+      double defect_room;
+    };
+
     /**
      * One implicit Euler step on the fluxes of the pressures @p pressure at
      * the end of the flow step @p data (t^n, Δt, apertures): @p concentration
-     * goes from c^{n−1} to c^n. Returns the amounts of tracer the step
-     * moved.
+     * goes from c^{n−1} to c^n. Throws if the amounts do not balance or c^n
+     * leaves the bounds of the discrete maximum principle.
      */
-    FluidVolumes
+    StepResult
     step(const FlowStepData   &data,
          const Vector<double> &pressure,
          Vector<double>       &concentration) const;
@@ -120,6 +137,14 @@ namespace PolyFrac
                     const std::vector<double> &pores,
                     const Vector<double>      &previous,
                     const Vector<double>      &concentration) const;
+
+    /** The StepResult::defect_room of the step solved by @p system to
+     * @p concentration; throws, naming the step, if the concentration
+     * leaves its bounds. */
+    double
+    checked_room(const FlowStepData   &data,
+                 const System         &system,
+                 const Vector<double> &concentration) const;
 
     /** The unknown c_σ of fracture face @p i. */
     unsigned int
