@@ -98,7 +98,20 @@ namespace PolyFrac
       std::vector<std::vector<unsigned int>> simplex_vertices;
       double                                 diameter = 0;
       Point<spacedim>                        lower, upper;
+      /** The average of the patch's vertices. */
+      Point<spacedim> centre;
     };
+
+    /** Whether @p a comes before @p b in x, then y, then z. */
+    template <int spacedim>
+    bool
+    lexicographically_less(const Point<spacedim> &a, const Point<spacedim> &b)
+    {
+      for (unsigned int d = 0; d < spacedim; ++d)
+        if (a[d] != b[d])
+          return a[d] < b[d];
+      return false;
+    }
 
     /** The PatchShape of @p patch. */
     template <int dim, int spacedim>
@@ -119,6 +132,7 @@ namespace PolyFrac
             shape.diameter =
               std::max(shape.diameter,
                        patch.vertices[a].distance(patch.vertices[b]));
+          shape.centre += patch.vertices[a] / static_cast<double>(n);
         }
       shape.simplex_vertices = simplices(dim, n);
       for (const std::vector<unsigned int> &simplex : shape.simplex_vertices)
@@ -300,19 +314,25 @@ namespace PolyFrac
     const auto         point_components = point_data_components(data, columns);
     const unsigned int n_columns        = columns.size();
 
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    std::vector<unsigned int>         owner(points.size(), n_ranks);
-    std::vector<double>               values(points.size() * n_columns, 0.);
+    const unsigned int  rank = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int  n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    std::vector<double> values(points.size() * n_columns, 0.);
+    // The vertex average of the patch chosen for each point (its key: the
+    // smallest in x, then y, then z), infinite where none holds it.
+    const Point<spacedim> none =
+      Point<spacedim>::unit_vector(0) * std::numeric_limits<double>::max();
+    std::vector<Point<spacedim>>      chosen(points.size(), none);
     std::vector<PatchShape<spacedim>> shapes;
     for (const auto &patch : data.patches)
       shapes.push_back(shape_of(patch));
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int p = 0; p < data.patches.size(); ++p)
-        if (const auto where = locate(shapes[p], points[i]))
+        if (const auto where = locate(shapes[p], points[i]);
+            where && lexicographically_less(shapes[p].centre, chosen[i]))
           {
-            owner[i]    = rank;
+            chosen[i]   = shapes[p].centre;
             double *row = &values[i * n_columns];
+            std::fill(row, row + n_columns, 0.);
             for (unsigned int c = 0; c < components.size(); ++c)
               {
                 const auto &array = data.cell_arrays[components[c].first];
@@ -326,12 +346,21 @@ namespace PolyFrac
                 row[components.size() + c] +=
                   weights[v] *
                   data.point_values[p](point_components[c], corners[v]);
-            break;
           }
-    std::vector<unsigned int> first(points.size());
-    Utilities::MPI::min(ArrayView<const unsigned int>(owner),
-                        communicator,
-                        ArrayView<unsigned int>(first));
+    // The rank whose patch has the smallest key (the lowest of equal ones).
+    const std::vector<std::vector<Point<spacedim>>> candidates =
+      Utilities::MPI::all_gather(communicator, chosen);
+    std::vector<unsigned int> first(points.size(), n_ranks);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        Point<spacedim> best = none;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          if (lexicographically_less(candidates[r][i], best))
+            {
+              best     = candidates[r][i];
+              first[i] = r;
+            }
+      }
     for (unsigned int i = 0; i < points.size(); ++i)
       if (first[i] != rank)
         for (unsigned int c = 0; c < n_columns; ++c)

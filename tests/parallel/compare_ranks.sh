@@ -6,6 +6,7 @@
 #   residual and the wall time);
 # - the N-rank run wrote, for every VTU step of the serial run, a .pvtu
 #   record listed by the .pvd, whose pieces (at most N) exist and hold data;
+# - the line probes and region integrals agree to TOL;
 # - only rank 0 printed (the N-rank output has the serial one's lines).
 # Exits non-zero, naming what fails.
 #
@@ -46,6 +47,21 @@ for series in "$workdir"/serial/time_series*.csv; do
       echo "$name differs (relative tolerance $tolerance)."; exit 1; }
 done
 
+# The line probes and region integrals (Output/Line probes, Region
+# integrals): every value, with the same tolerance (a point on a face
+# shared by two cells takes the same cell's value on any number of ranks).
+probes=0
+for table in "$workdir"/serial/line-*.csv "$workdir"/serial/regions-*.csv; do
+  [ -e "$table" ] || continue
+  name=$(basename "$table")
+  [ -s "$workdir/ranks/$name" ] || { echo "the $n-rank run wrote no $name"; exit 1; }
+  numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-12 "$table" "$workdir/ranks/$name" ||
+    { numdiff -s ', \t\n' -r "$tolerance" -a 1e-12 "$table" \
+        "$workdir/ranks/$name" | tail -5;
+      echo "$name differs (relative tolerance $tolerance)."; exit 1; }
+  probes=$((probes + 1))
+done
+
 steps=0
 for vtu in "$workdir"/serial/*-[0-9][0-9][0-9][0-9].vtu; do
   name=$(basename "$vtu" .vtu)
@@ -72,4 +88,4 @@ if [ "$(grep -c '^Level ' "$workdir/ranks.log")" != \
 fi
 echo "Same convergence table on $n ranks (relative tolerance $tolerance):" \
   "$(($(wc -l < "$workdir/serial.csv") - 1)) levels; $steps VTU steps as" \
-  ".pvtu records of at most $n pieces"
+  ".pvtu records of at most $n pieces; $probes probe and region tables"

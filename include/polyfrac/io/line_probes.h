@@ -27,9 +27,10 @@ namespace PolyFrac
    * a scalar's name, a vector's name_x, _y, _z, a tensor's name_xx, _xy,
    * ...), NaN where no patch holds the point. A patch holds a point if the
    * point lies in it, or for patches of lower dimension (fracture faces)
-   * within 1e-8 of its diameter from it; the first patch found wins. On
-   * several ranks the values of the lowest rank that holds a point, on
-   * every rank.
+   * within 1e-8 of its diameter from it. Of several patches that hold a
+   * point (on a face or vertex they share) the one whose vertex average
+   * comes first in x, then y, then z: the same on any number of ranks.
+   * The values on every rank.
    */
   template <int dim, int spacedim>
   std::vector<std::vector<double>>
