@@ -9,6 +9,7 @@
 #include <functional>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -321,16 +322,34 @@ namespace PolyFrac
     // smallest in x, then y, then z), infinite where none holds it.
     const Point<spacedim> none =
       Point<spacedim>::unit_vector(0) * std::numeric_limits<double>::max();
-    std::vector<Point<spacedim>>      chosen(points.size(), none);
-    std::vector<PatchShape<spacedim>> shapes;
-    for (const auto &patch : data.patches)
-      shapes.push_back(shape_of(patch));
-    for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int p = 0; p < data.patches.size(); ++p)
-        if (const auto where = locate(shapes[p], points[i]);
-            where && lexicographically_less(shapes[p].centre, chosen[i]))
+    std::vector<Point<spacedim>> chosen(points.size(), none);
+    // The points by x, so that each patch meets only those within its
+    // bounding box's x range (and its tolerance, locate()).
+    std::vector<unsigned int> by_x(points.size());
+    std::iota(by_x.begin(), by_x.end(), 0u);
+    std::sort(by_x.begin(), by_x.end(), [&](const auto a, const auto b) {
+      return points[a][0] < points[b][0];
+    });
+    const auto x_at = [&](const double x) {
+      return std::lower_bound(by_x.begin(),
+                              by_x.end(),
+                              x,
+                              [&](const auto i, const double value) {
+                                return points[i][0] < value;
+                              });
+    };
+    for (unsigned int p = 0; p < data.patches.size(); ++p)
+      {
+        const PatchShape<spacedim> shape     = shape_of(data.patches[p]);
+        const double               tolerance = 1e-8 * shape.diameter;
+        const auto                 end = x_at(shape.upper[0] + 2 * tolerance);
+        for (auto it = x_at(shape.lower[0] - 2 * tolerance); it != end; ++it)
           {
-            chosen[i]   = shapes[p].centre;
+            const unsigned int i     = *it;
+            const auto         where = locate(shape, points[i]);
+            if (!where || !lexicographically_less(shape.centre, chosen[i]))
+              continue;
+            chosen[i]   = shape.centre;
             double *row = &values[i * n_columns];
             std::fill(row, row + n_columns, 0.);
             for (unsigned int c = 0; c < components.size(); ++c)
@@ -347,6 +366,7 @@ namespace PolyFrac
                   weights[v] *
                   data.point_values[p](point_components[c], corners[v]);
           }
+      }
     // The rank whose patch has the smallest key (the lowest of equal ones).
     const std::vector<std::vector<Point<spacedim>>> candidates =
       Utilities::MPI::all_gather(communicator, chosen);
