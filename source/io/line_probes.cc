@@ -89,8 +89,9 @@ namespace PolyFrac
 
 
 
-    /** The corners of the simplices of a patch, its diameter and the
-     * bounding box of its vertices: computed once per patch. */
+    /** The corners of the simplices of a patch, its diameter, the
+     * bounding box of its vertices and the tolerance of locate(): computed
+     * once per patch. */
     template <int spacedim>
     struct PatchShape
     {
@@ -99,6 +100,9 @@ namespace PolyFrac
       std::vector<std::vector<unsigned int>> simplex_vertices;
       double                                 diameter = 0;
       Point<spacedim>                        lower, upper;
+      /** 1e-8 of the diameter: how far outside the patch (or off its
+       * plane, for a fracture face) a point may lie that it holds. */
+      double tolerance = 0;
       /** The average of the patch's vertices. */
       Point<spacedim> centre;
     };
@@ -133,8 +137,9 @@ namespace PolyFrac
             shape.diameter =
               std::max(shape.diameter,
                        patch.vertices[a].distance(patch.vertices[b]));
-          shape.centre += patch.vertices[a] / static_cast<double>(n);
         }
+      shape.tolerance        = 1e-8 * shape.diameter;
+      shape.centre           = vertex_average(patch);
       shape.simplex_vertices = simplices(dim, n);
       for (const std::vector<unsigned int> &simplex : shape.simplex_vertices)
         {
@@ -152,7 +157,7 @@ namespace PolyFrac
     std::optional<std::pair<std::vector<unsigned int>, std::vector<double>>>
     locate(const PatchShape<spacedim> &shape, const Point<spacedim> &x)
     {
-      const double tolerance = 1e-8 * shape.diameter;
+      const double tolerance = shape.tolerance;
       for (unsigned int d = 0; d < spacedim; ++d)
         if (x[d] < shape.lower[d] - tolerance ||
             x[d] > shape.upper[d] + tolerance)
@@ -323,27 +328,30 @@ namespace PolyFrac
     const Point<spacedim> none =
       Point<spacedim>::unit_vector(0) * std::numeric_limits<double>::max();
     std::vector<Point<spacedim>> chosen(points.size(), none);
-    // The points by x, so that each patch meets only those within its
-    // bounding box's x range (and its tolerance, locate()).
+    // The points by x, so that each patch meets only those that locate()
+    // does not reject by x: in [lower - tolerance, upper + tolerance].
     std::vector<unsigned int> by_x(points.size());
     std::iota(by_x.begin(), by_x.end(), 0u);
     std::sort(by_x.begin(), by_x.end(), [&](const auto a, const auto b) {
       return points[a][0] < points[b][0];
     });
-    const auto x_at = [&](const double x) {
-      return std::lower_bound(by_x.begin(),
-                              by_x.end(),
-                              x,
-                              [&](const auto i, const double value) {
-                                return points[i][0] < value;
-                              });
+    const auto x_below = [&](const unsigned int i, const double x) {
+      return points[i][0] < x;
+    };
+    const auto x_above = [&](const double x, const unsigned int i) {
+      return x < points[i][0];
     };
     for (unsigned int p = 0; p < data.patches.size(); ++p)
       {
-        const PatchShape<spacedim> shape     = shape_of(data.patches[p]);
-        const double               tolerance = 1e-8 * shape.diameter;
-        const auto                 end = x_at(shape.upper[0] + 2 * tolerance);
-        for (auto it = x_at(shape.lower[0] - 2 * tolerance); it != end; ++it)
+        const PatchShape<spacedim> shape = shape_of(data.patches[p]);
+        const auto                 end   = std::upper_bound(by_x.begin(),
+                                          by_x.end(),
+                                          shape.upper[0] + shape.tolerance,
+                                          x_above);
+        for (auto it = std::lower_bound(
+               by_x.begin(), end, shape.lower[0] - shape.tolerance, x_below);
+             it != end;
+             ++it)
           {
             const unsigned int i     = *it;
             const auto         where = locate(shape, points[i]);

@@ -134,13 +134,7 @@ namespace PolyFrac
         return;
       std::vector<Point<spacedim>> centres;
       for (const auto &patch : data.patches)
-        {
-          const unsigned int n = patch.reference_cell.n_vertices();
-          Point<spacedim>    centre;
-          for (unsigned int v = 0; v < n; ++v)
-            centre += patch.vertices[v] / static_cast<double>(n);
-          centres.push_back(centre);
-        }
+        centres.push_back(vertex_average(patch));
       const auto index =
         Utilities::inverse_Hilbert_space_filling_curve(centres);
       std::vector<unsigned int> order(data.patches.size());

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace PolyFrac
@@ -85,7 +86,6 @@ namespace PolyFrac
         }
       else
         {
-          rhs(from) -= F * c_in;
           enter(from, -F, c_in);
           inflow -= F * c_in;
           inflow_by_boundary[boundary] -= F * c_in;
@@ -99,7 +99,6 @@ namespace PolyFrac
     {
       if (q > 0)
         {
-          rhs(k) += q * c_source;
           enter(k, q, c_source);
           injected += q * c_source;
         }
@@ -110,12 +109,13 @@ namespace PolyFrac
         }
     }
 
-    /** The right-hand side's term @p coefficient times @p c of row @p i:
-     * tracer of concentration @p c that enters unknown @p i (the storage
-     * of the last step, an inflow, a source). */
+    /** Adds the right-hand side's term @p coefficient times @p c to row
+     * @p i: tracer of concentration @p c that enters unknown @p i (the
+     * storage of the last step, an inflow, a source). */
     void
     enter(const unsigned int i, const double coefficient, const double c)
     {
+      rhs(i) += coefficient * c;
       entering(i) += coefficient;
       lowest  = std::min(lowest, c);
       highest = std::max(highest, c);
@@ -131,11 +131,11 @@ namespace PolyFrac
      * of the entering concentrations, m (1 − z_i) ≤ c_i ≤ M (1 − z_i).
      * Returns how far these bounds reach beyond [m, M], relative to
      * max(|m|, |M|) (0 when the fluxes balance; their round-off or the
-     * fluid a compressible flow stores makes it positive), or, if @p c
+     * fluid a compressible flow stores makes it positive), or none if @p c
      * leaves them by more than 1e-12 of max(|m|, |M|) (the solve's
-     * round-off), −1.
+     * round-off).
      */
-    double
+    std::optional<double>
     defect_room(const Vector<double> &c) const
     {
       Vector<double> d(rows.size());
@@ -153,11 +153,11 @@ namespace PolyFrac
           const double lower = lowest * (1 - z(i)),
                        upper = highest * (1 - z(i));
           if (c(i) > upper + 1e-12 * scale || c(i) < lower - 1e-12 * scale)
-            return -1;
+            return std::nullopt;
           below = std::min(below, lower);
           above = std::max(above, upper);
         }
-      return scale > 0 ? std::max(lowest - below, above - highest) / scale : 0;
+      return scale > 0 ? std::max(lowest - below, above - highest) / scale : 0.;
     }
 
     /** Gives every row without a diagonal (an edge that nothing leaves)
@@ -383,7 +383,6 @@ namespace PolyFrac
     for (unsigned int k = 0; k < pores.size(); ++k)
       {
         system.add(k, k, pores[k] / data.time_step);
-        system.rhs(k) += pores[k] / data.time_step * concentration(k);
         system.enter(k, pores[k] / data.time_step, concentration(k));
       }
     const Fluxes F = fluxes(data, pressure);
@@ -508,8 +507,8 @@ namespace PolyFrac
                                const System         &system,
                                const Vector<double> &concentration) const
   {
-    const double room = system.defect_room(concentration);
-    AssertThrow(room >= 0,
+    const std::optional<double> room = system.defect_room(concentration);
+    AssertThrow(room.has_value(),
                 ExcMessage("In <" + context.file_name +
                            ">: the tracer's concentration of the step to t = " +
                            std::to_string(data.time) +
@@ -519,7 +518,7 @@ namespace PolyFrac
                            "principle of upwinding): the transport's "
                            "matrix is not an M-matrix, a defect of "
                            "PolyFrac to report."));
-    return room;
+    return *room;
   }
 
 

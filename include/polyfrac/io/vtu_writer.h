@@ -81,6 +81,18 @@ namespace PolyFrac
     std::vector<unsigned int> point_scalars;
   };
 
+  /** The average of the vertices of @p patch. */
+  template <int dim, int spacedim>
+  Point<spacedim>
+  vertex_average(const DataOutBase::Patch<dim, spacedim> &patch)
+  {
+    const unsigned int n = patch.reference_cell.n_vertices();
+    Point<spacedim>    average;
+    for (unsigned int v = 0; v < n; ++v)
+      average += patch.vertices[v] / static_cast<double>(n);
+    return average;
+  }
+
   /** A scalar or vector field with one value per polytope (matrix output)
    * or per fracture face (fracture output), written as VTU cell data: an
    * array of one component, or of 3 for a vector (2D vectors padded with
