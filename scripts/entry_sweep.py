@@ -357,7 +357,7 @@ def variants(path, default, help_text, work_dir):
 # --------------------------------------------------------------------------
 # The base scenes.
 
-def base_scene(model, out_dir, ranks=1):
+def base_scene(model, out_dir):
     lines = ["set Dimension = 2",
              "subsection Model", "  set Model = %s" % model, "end",
              "subsection Mesh", "  set Subdivisions = 4, 4", "end"]
@@ -374,9 +374,6 @@ def base_scene(model, out_dir, ranks=1):
     if model == "flow":
         lines += ["subsection Flow", "  set Pressure boundary ids = 0, 1",
                   "end"]
-    if model == "poromechanics" and ranks > 1:
-        # The face bubbles are not distributed yet (refused on several ranks).
-        lines += ["subsection Flow", "  set Face bubbles = false", "end"]
     if model == "elasticity":
         lines += ["subsection Body force",
                   "  set Function expression = 1; 0", "end"]
@@ -625,7 +622,7 @@ def main():
         prm = os.path.join(work, "base-%s.prm" % tag)
         out_dir = os.path.join(work, "run-%s" % tag)
         with open(prm, "w") as f:
-            f.write(base_scene(model, out_dir, a.ranks))
+            f.write(base_scene(model, out_dir))
         rc, out, err, sec = run_one(polyfrac, env, prm, out_dir, None, "",
                                     a.timeout, a.ranks)
         outcome = classify(rc, out, err, "", "", out_dir)[0]

@@ -89,14 +89,7 @@ namespace PolyFrac
                        std::make_unique<FixedStressPreconditioner>() :
                        nullptr)
   {
-    AssertThrow(bubbles == nullptr || !dofs.is_distributed(),
-                ExcInternalError()); // BiotSystem refuses them
     make_pattern();
-    // The cell pressures whose couplings this rank adds (its cells').
-    own_cell_pressure.assign(n_p, false);
-    for (unsigned int c = 0; c < dofs.n_cells(); ++c)
-      own_cell_pressure[pressure_dofs.cell_dof(c)] =
-        pressure_dofs.is_locally_owned_cell(c);
   }
 
 
@@ -117,6 +110,7 @@ namespace PolyFrac
                              p0,
                              true,
                              flow.biot_coefficients(),
+                             CellSelection::all,
                              [&](const auto row, const auto p_K, double) {
                                pattern.add(row, p_K);
                                pattern.add(p_K, row);
@@ -195,11 +189,10 @@ namespace PolyFrac
                              p0,
                              true,
                              flow.biot_coefficients(),
+                             CellSelection::locally_owned,
                              [&](const auto   row,
                                  const auto   p_K,
                                  const double value) {
-                               if (!own_cell_pressure[p_K - p0])
-                                 return;
                                jacobian.add(row, p_K, -value);
                                jacobian.add(p_K, row, -value);
                              });
@@ -289,22 +282,6 @@ namespace PolyFrac
 
 
   template <int dim>
-  void
-  PoromechanicalNewton<dim>::sum_over_ranks(SparseMatrix<double> &matrix) const
-  {
-    std::vector<double> values;
-    values.reserve(matrix.n_nonzero_elements());
-    for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
-      values.push_back(entry->value());
-    Utilities::MPI::sum(values, communicator(), values);
-    auto value = values.begin();
-    for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
-      entry->value() = *value++;
-  }
-
-
-
-  template <int dim>
   double
   PoromechanicalNewton<dim>::fracture_face_measure(const unsigned int i) const
   {
@@ -351,7 +328,10 @@ namespace PolyFrac
           }
         for (types::global_dof_index k = 0; k < n_s; ++k)
           residual(s0 + k) = As(k) - start.bubble_loads(k);
-        bubbles->add_stiffness(jacobian, s0, true);
+        bubbles->add_stiffness(jacobian,
+                               s0,
+                               true,
+                               CellSelection::locally_owned);
       }
 
     // Mass: the step's data at the apertures of (u, λ).
@@ -398,7 +378,7 @@ namespace PolyFrac
     const ContactStates states =
       contact.linearise(x, start.state, residual, jacobian);
     if (dofs.is_distributed())
-      sum_over_ranks(jacobian);
+      sum_over_ranks(jacobian, communicator());
 
     // Prescribed pressures: identity rows, scaled like the flow block, and
     // no coupling to them in other rows either (their increments vanish):

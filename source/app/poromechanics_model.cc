@@ -195,9 +195,7 @@ namespace PolyFrac
     const Scheme scheme    = prm.nonlinear.coupling_scheme;
     const bool   fractured = discretization.network->n_fracture_faces() > 0;
     std::string  obstacle;
-    if (discretization.dofs->is_distributed() && !fractured)
-      obstacle = "on several ranks without fractures";
-    else if (!prm.flow.face_bubbles && !fractured)
+    if (!prm.flow.face_bubbles && !fractured)
       obstacle = "without fractures and without Flow/Face bubbles";
     AssertThrow(scheme != Scheme::monolithic || obstacle.empty(),
                 ExcMessage("In <" + prm.file_name +

@@ -94,4 +94,19 @@ namespace PolyFrac
       for (std::size_t k = 0; k + 1 < other.size(); k += 2)
         pattern.add(other[k], other[k + 1]);
   }
+
+
+
+  void
+  sum_over_ranks(SparseMatrix<double> &matrix, const MPI_Comm communicator)
+  {
+    std::vector<double> values;
+    values.reserve(matrix.n_nonzero_elements());
+    for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
+      values.push_back(entry->value());
+    Utilities::MPI::sum(values, communicator, values);
+    auto value = values.begin();
+    for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
+      entry->value() = *value++;
+  }
 } // namespace PolyFrac

@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_minres.h>
 
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/physics/biot_system.h>
 
 #include <cmath>
@@ -34,11 +35,6 @@ namespace PolyFrac
     , iterative(unknowns == Unknowns::bubbles_and_pressures &&
                 solver.method != SolverMethod::direct)
   {
-    AssertThrow(!dofs.is_distributed(),
-                ExcMessage("In <" + context.file_name +
-                           ">: the normal face bubbles of poromechanics (the "
-                           "stable displacement-pressure pair) are not yet "
-                           "available on several ranks: run on one rank."));
     make_pattern();
   }
 
@@ -60,6 +56,7 @@ namespace PolyFrac
                              n_u + n_s,
                              all,
                              flow.biot_coefficients(),
+                             CellSelection::all,
                              [&](const auto row, const auto p_K, double) {
                                pattern.add(row, p_K);
                                pattern.add(p_K, row);
@@ -74,6 +71,10 @@ namespace PolyFrac
                          });
     for (types::global_dof_index i = 0; i < n_dofs(); ++i)
       pattern.add(i, i);
+    // Each rank added the couplings of its cells; their parts are summed
+    // on the whole pattern.
+    if (dofs.is_distributed())
+      unite_over_ranks(pattern, dofs.get_communicator());
     sparsity.copy_from(pattern);
     matrix.reinit(sparsity);
     constrained_matrix.reinit(sparsity);
@@ -135,7 +136,7 @@ namespace PolyFrac
         Vector<double> unused(n_dofs());
         elasticity.assemble_operator(matrix, unused);
       }
-    bubbles.add_stiffness(matrix, n_u, all);
+    bubbles.add_stiffness(matrix, n_u, all, CellSelection::locally_owned);
     for_each_volume_coupling(coupling,
                              &bubbles,
                              pressure_dofs,
@@ -143,6 +144,7 @@ namespace PolyFrac
                              n_u + n_s,
                              all,
                              flow.biot_coefficients(),
+                             CellSelection::locally_owned,
                              [&](const auto   row,
                                  const auto   p_K,
                                  const double value) {
@@ -158,6 +160,8 @@ namespace PolyFrac
                              const auto &entry) {
                            matrix.add(row, column, -dt * entry->value());
                          });
+    if (dofs.is_distributed())
+      sum_over_ranks(matrix, dofs.get_communicator());
     factorise();
     factorised_step = all ? dt : 0;
   }

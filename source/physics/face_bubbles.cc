@@ -116,10 +116,13 @@ namespace PolyFrac
   void
   FaceBubbles<dim>::add_stiffness(SparseMatrix<double>         &matrix,
                                   const types::global_dof_index offset,
-                                  const bool with_mechanics) const
+                                  const bool                    with_mechanics,
+                                  const CellSelection           cells) const
   {
     for (unsigned int c = 0; c < blocks.size(); ++c)
       {
+        if (!is_selected(dofs, cells, c))
+          continue;
         const CellBlock &block = blocks[c];
         const auto       local = dofs.cell_dofs(c);
         for (unsigned int j = 0; j < block.bubbles.size(); ++j)
@@ -230,7 +233,7 @@ namespace PolyFrac
         add_couplings(pattern, 0, false);
         bubble_sparsity.copy_from(pattern);
         bubble_stiffness.reinit(bubble_sparsity);
-        add_stiffness(bubble_stiffness, 0, false);
+        add_stiffness(bubble_stiffness, 0, false, CellSelection::all);
         bubble_factorisation.initialize(bubble_stiffness);
       }
     // F_s − A_su u + b D_sᵀ p.

@@ -73,7 +73,7 @@ namespace
     Vector<double>       unused(n);
     elasticity.assemble_operator(A, unused);
     if (with_bubbles)
-      bubbles.add_stiffness(A, n_u, true);
+      bubbles.add_stiffness(A, n_u, true, CellSelection::all);
     const auto &constraints = elasticity.get_constraints();
     for (const auto &line : constraints.get_lines())
       {

@@ -65,8 +65,8 @@ namespace PolyFrac
    * iterations), the complementarity parameters are divided by 10, as in
    * ContactMechanics::newton(), at most three times. Every step is damped
    * where the full step would make the residual larger (line_search()). On
-   * several ranks (without face bubbles, which are not distributed) every rank
-   * adds its part of the Jacobian (its cells, fracture faces and rows of A) to
+   * several ranks every rank adds its part of the Jacobian (its cells with
+   * their face bubbles, fracture faces and rows of A) to
    * the whole matrix, the parts are summed over the ranks, and every rank
    * factorises the sum by itself (MUMPS on several processes is not
    * reproducible from run to run, and a resumed run must give the bits of
@@ -291,10 +291,6 @@ namespace PolyFrac
     MPI_Comm
     communicator() const;
 
-    /** Sums the ranks' parts of @p matrix (its values, on one pattern). */
-    void
-    sum_over_ranks(SparseMatrix<double> &matrix) const;
-
     /** |σ| of fracture face @p i. */
     double
     fracture_face_measure(const unsigned int i) const;
@@ -355,9 +351,6 @@ namespace PolyFrac
     SparseMatrix<double> flow_matrix;
     /** The prescribed pressures of the step (offset to x). */
     AffineConstraints<double> pressure_constraints;
-    /** Whether this rank adds the couplings of a cell pressure (its
-     * cell's), by pressure dof. */
-    std::vector<bool> own_cell_pressure;
     /** b²/K_dr per cell and the fracture faces' compliance. */
     const std::vector<double> &fixed_stress_coefficients;
     const std::vector<double> &fracture_compliance;

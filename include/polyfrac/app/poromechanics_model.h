@@ -38,8 +38,8 @@ namespace PolyFrac
    * fracture storage and volume, with the same discrete divergence and
    * jump as the momentum equation (BiotCoupling).
    *
-   * Without fractures on one rank (Nonlinear solver/Coupling scheme =
-   * automatic or monolithic), each step is one symmetric saddle-point solve
+   * Without fractures (Nonlinear solver/Coupling scheme = automatic or
+   * monolithic), each step is one symmetric saddle-point solve
    * of BiotSystem, in the displacement, the normal face bubbles
    * (FaceBubbles: the stable pair, no pressure stabilisation) and the
    * pressures, factorised once per time step length.
@@ -214,8 +214,8 @@ namespace PolyFrac
     newton_step(const double t_old, const double t_new, std::ostream &out);
 
     /** Throws naming the entry if Coupling scheme = monolithic where it
-     * does not apply (several ranks; without fractures, without face
-     * bubbles); whether it is used. */
+     * does not apply (without fractures and without face bubbles);
+     * whether it is used. */
     bool
     use_monolithic_scheme() const;
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -94,6 +95,14 @@ namespace PolyFrac
   void
   unite_over_ranks(DynamicSparsityPattern &pattern,
                    const MPI_Comm          communicator);
+
+  /**
+   * Sums the values of @p matrix over the ranks of @p communicator, entry
+   * by entry, on every rank: each rank added its part on the same pattern
+   * (unite_over_ranks()), and each holds the whole matrix afterwards.
+   */
+  void
+  sum_over_ranks(SparseMatrix<double> &matrix, const MPI_Comm communicator);
 
   /**
    * A solve on the rows @p owned of this rank: the whole @p rhs restricted

@@ -37,6 +37,29 @@ namespace PolyFrac
   };
 
   /**
+   * Which cells of the (whole, replicated) mesh a loop visits on this rank:
+   * every cell, for data that each rank holds whole, or the cells this
+   * rank owns, for the parts of a matrix that are summed over the ranks
+   * (sum_over_ranks()). On one rank both are every cell.
+   */
+  enum class CellSelection
+  {
+    all,
+    locally_owned
+  };
+
+  /** Whether cell @p c of @p dofs (DoFMap or PressureDoFMap) is among
+   * @p cells. */
+  template <typename DoFMapType>
+  bool
+  is_selected(const DoFMapType   &dofs,
+              const CellSelection cells,
+              const unsigned int  c)
+  {
+    return cells == CellSelection::all || dofs.is_locally_owned_cell(c);
+  }
+
+  /**
    * FE-less numbering of the unknowns of the bubble-VEM scheme
    * (doc/scheme.md §3):
    * - one vector unknown per *node side*: around each vertex s, the cells

@@ -36,7 +36,7 @@ namespace PolyFrac
    * BiotCoupling), and those of b D_s on the face bubbles of @p bubbles
    * (if not null; numbered from @p s_offset). The blocks −b D, −b D_s of
    * the poromechanical systems (BiotSystem, PoromechanicalNewton) and
-   * their patterns.
+   * their patterns; of the cells @p cells only.
    */
   template <int dim, typename Visitor>
   void
@@ -47,11 +47,14 @@ namespace PolyFrac
                            const types::global_dof_index p_offset,
                            const bool                    with_mechanics,
                            const std::vector<double>    &biot_coefficients,
+                           const CellSelection           cells,
                            const Visitor                &visit)
   {
     const auto &divide = coupling.divergence_matrix();
     for (unsigned int c = 0; c < divide.m(); ++c)
       {
+        if (!is_selected(pressure_dofs, cells, c))
+          continue;
         const types::global_dof_index p_K =
           p_offset + pressure_dofs.cell_dof(c);
         for (auto entry = divide.begin(c);
@@ -121,6 +124,13 @@ namespace PolyFrac
    * complement with Ã replaced by its diagonal I (the bubbles' stiffness
    * is local and well conditioned; B̃ B̃ᵀ couples the two cells of each
    * bubble's face).
+   *
+   * On several ranks each rank adds the parts of its own cells (their
+   * stiffness, bubbles, volume couplings and flow rows) on the pattern
+   * united over the ranks, the parts are summed (sum_over_ranks()), and
+   * every rank factorises, or solves by MINRES, the whole system by itself:
+   * the answers are those of one rank, but nothing of this system is
+   * divided among the ranks yet.
    *
    * @code
    *   BiotSystem<dim> system(prm.solver, prm, dofs, pressure_dofs, flow,

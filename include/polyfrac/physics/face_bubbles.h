@@ -54,7 +54,10 @@ namespace PolyFrac
    * The bubbles couple to the cells' local mechanics unknowns (node sides
    * and fracture bubbles, DoFMap::cell_dofs()) and to one another through
    * their cells; the blocks are kept per cell (CellBlock) and assembled by
-   * the user (BiotSystem).
+   * the user (BiotSystem, PoromechanicalNewton). Every rank computes the
+   * blocks of every cell, like the rest of the mesh's data, so loads(),
+   * vmult() and volume_changes() are whole on each rank; a matrix summed
+   * over the ranks takes each rank's own cells (add_stiffness()).
    *
    * @code
    *   const FaceBubbles<dim> bubbles(geometry, network, dofs, elasticity);
@@ -110,11 +113,13 @@ namespace PolyFrac
                   const bool                    with_mechanics) const;
 
     /** Adds A_ss and, if @p with_mechanics, A_us and A_su (the bubbles
-     * numbered from @p offset) to @p matrix, which holds add_couplings(). */
+     * numbered from @p offset) to @p matrix, which holds add_couplings():
+     * the parts of the cells @p cells. */
     void
     add_stiffness(SparseMatrix<double>         &matrix,
                   const types::global_dof_index offset,
-                  const bool                    with_mechanics) const;
+                  const bool                    with_mechanics,
+                  const CellSelection           cells) const;
 
     /**
      * The loads of the bubbles at the time of the elasticity's set_time():
