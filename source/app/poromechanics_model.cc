@@ -760,7 +760,8 @@ namespace PolyFrac
                                       Vector<double>             &p) {
       data = fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
       if (system)
-        system->solve_bubbles_and_pressures(data, state, pressure, u_k, s, p);
+        system->solve_bubbles_and_pressures(
+          data, state, pressure, u_k, p_k, s, p);
       else
         {
           data.increment_mobility = stabilisation;

@@ -77,16 +77,6 @@ namespace PolyFrac
 
 
 
-    /**
-     * The Krylov space of GMRES before a restart: 100 vectors of the reduced
-     * operator's size. On B6 the condensed Coulomb steps take up to 130
-     * iterations; a restart after 50 cost 17 % more iterations, one after
-     * 200 saved 2 % more than one after 100 (benchmarks/README.md).
-     */
-    constexpr unsigned int gmres_restart = 100;
-
-
-
   } // namespace
 
 
@@ -170,7 +160,8 @@ namespace PolyFrac
 
   void
   initialize_pressure_amg(TrilinosWrappers::PreconditionAMG    &amg,
-                          const TrilinosWrappers::SparseMatrix &matrix)
+                          const TrilinosWrappers::SparseMatrix &matrix,
+                          const PressureSmoother                smoother)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
     amg_data.elliptic = true;
@@ -178,6 +169,8 @@ namespace PolyFrac
     // network (cells, faces and fracture unknowns together) CG needs 735
     // iterations over 20 solves instead of 1,834.
     amg_data.aggregation_threshold = 0.1;
+    if (smoother == PressureSmoother::incomplete_lu)
+      amg_data.smoother_type = "ILU";
     amg.initialize(matrix, amg_data);
   }
 

@@ -1,9 +1,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/linear_operator.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_minres.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <polyfrac/base/mpi.h>
+#include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/biot_system.h>
 
 #include <cmath>
@@ -243,9 +244,11 @@ namespace PolyFrac
 
   template <int dim>
   void
-  BiotSystem<dim>::minres_solve(const Vector<double> &rhs, Vector<double> &x)
+  BiotSystem<dim>::gmres_solve(const Vector<double> &rhs, Vector<double> &x)
   {
-    // diag(I, AMG(Ŝ)⁻¹): symmetric positive definite, as MINRES needs.
+    // diag(I, AMG(Ŝ)⁻¹) on the right. With ILU smoothing the V-cycle is
+    // not symmetric to round-off, which MINRES needs (it broke down on B6
+    // when started from the iterate); GMRES does not.
     const auto preconditioner = [this](Vector<double>       &dst,
                                        const Vector<double> &src) {
       dst = src;
@@ -259,25 +262,27 @@ namespace PolyFrac
     const auto operator_ = linear_operator<Vector<double>>(constrained_matrix);
     auto       inverse   = linear_operator<Vector<double>>(constrained_matrix);
     inverse.vmult        = preconditioner;
-    SolverControl                control(solver.max_iterations,
+    SolverControl               control(solver.max_iterations,
                           solver.tolerance * rhs.l2_norm());
-    SolverMinRes<Vector<double>> minres(control);
+    SolverGMRES<Vector<double>> gmres(
+      control,
+      typename SolverGMRES<Vector<double>>::AdditionalData(gmres_restart,
+                                                           true));
     try
       {
-        minres.solve(operator_, x, rhs, inverse);
+        gmres.solve(operator_, x, rhs, inverse);
       }
     catch (const SolverControl::NoConvergence &)
       {
         AssertThrow(false,
                     ExcMessage("The fixed-stress flow step (face bubbles, "
-                               "pressures): MINRES with the block "
+                               "pressures): GMRES with the block "
                                "preconditioner did not reach Linear "
                                "solver/Tolerance in " +
                                std::to_string(control.last_step()) +
                                " iterations; raise Maximum iterations or use "
                                "Method = direct."));
       }
-    minres_iterations += control.last_step();
   }
 
 
@@ -321,20 +326,24 @@ namespace PolyFrac
       for (const auto &[a, value_a] : column)
         for (const auto &[b, value_b] : column)
           hat.add(a, b, value_a * value_b);
+    // A prescribed pressure's row is +1 in the system: +1 in Ŝ too (the
+    // row above gave −1, which made the preconditioner indefinite).
+    for (const auto &line : constraints.get_lines())
+      if (line.index >= offset)
+        hat.set(line.index - offset, line.index - offset, 1.);
     // No drop tolerance: the scaled entries are of order one, but keep
-    // every one (Flow's reason).
+    // every one (Flow's reason). ILU(0) smoothing: with Chebyshev, the
+    // solves of B6's 17k tetrahedra took 725 MINRES iterations each, with
+    // ILU 109 (4.6 s against 1.6 s; benchmarks/B6.md).
     schur.reinit(hat, 0.);
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.aggregation_threshold = 0.1;
-    schur_amg.initialize(schur, data);
+    initialize_pressure_amg(schur_amg, schur, PressureSmoother::incomplete_lu);
   }
 
 
 
   template <int dim>
   Vector<double>
-  BiotSystem<dim>::solve(Vector<double> &rhs)
+  BiotSystem<dim>::solve(Vector<double> &rhs, const Vector<double> &guess)
   {
     // Lifting: x = x_0 + x_g, K_c x_0 = r − K x_g on the free unknowns.
     Vector<double> lifted(n_dofs()), correction(n_dofs()), x(n_dofs());
@@ -346,7 +355,14 @@ namespace PolyFrac
       rhs(line.index) = 0;
     rhs.scale(scaling);
     if (iterative)
-      minres_solve(rhs, x);
+      {
+        // x = S⁻¹ (guess − x_g) on the free unknowns.
+        if (guess.size() > 0)
+          for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+            if (!constraints.is_constrained(i))
+              x(i) = (guess(i) - lifted(i)) / scaling(i);
+        gmres_solve(rhs, x);
+      }
     else
       direct.vmult(x, rhs);
     x.scale(scaling);
@@ -442,6 +458,7 @@ namespace PolyFrac
     const MechanicalState<dim> &before,
     const Vector<double>       &p_before,
     const MechanicalState<dim> &u_k,
+    const Vector<double>       &p_k,
     Vector<double>             &s,
     Vector<double>             &p)
   {
@@ -458,7 +475,12 @@ namespace PolyFrac
     for (unsigned int j = 0; j < n_s; ++j)
       rhs(j) = s_load(j);
     add_mass_rhs(data, flow_rhs, before, rhs);
-    const Vector<double> x = solve(rhs);
+    Vector<double> guess(n_dofs());
+    for (types::global_dof_index i = 0; i < n_s; ++i)
+      guess(i) = u_k.face_bubbles(i);
+    for (types::global_dof_index i = 0; i < n_p; ++i)
+      guess(n_s + i) = p_k(i);
+    const Vector<double> x = solve(rhs, guess);
     s.reinit(n_s);
     p.reinit(n_p);
     for (types::global_dof_index i = 0; i < n_s; ++i)

@@ -18,6 +18,14 @@ namespace PolyFrac
   using namespace dealii;
 
   /**
+   * The Krylov space of GMRES before a restart: 100 vectors of the
+   * operator's size. On B6 the condensed Coulomb steps take up to 130
+   * iterations; a restart after 50 cost 17 % more iterations, one after
+   * 200 saved 2 % more than one after 100 (benchmarks/README.md).
+   */
+  constexpr unsigned int gmres_restart = 100;
+
+  /**
    * The two ML hierarchies that PolyFrac builds (benchmarks/README.md,
    * "AMG near null space" and "Memory budget").
    */
@@ -76,15 +84,30 @@ namespace PolyFrac
                const LinearSolverParameters         &solver,
                const double                          enough = 0.);
 
+  /** The smoother of initialize_pressure_amg()'s levels. */
+  enum class PressureSmoother
+  {
+    /** ML's default for elliptic operators: Chebyshev polynomials on the
+     * diagonal. */
+    chebyshev,
+    /** Ifpack's incomplete LU, ILU(0): for operators whose unknowns couple
+     * at very different strengths once scaled to a unit diagonal (the
+     * Schur complement of BiotSystem, where the bubbles couple the cells
+     * strongly and the flow couples cells and faces weakly). */
+    incomplete_lu
+  };
+
   /**
    * Initialises @p amg, Trilinos ML aggregation AMG for the pressure
    * operator @p matrix of the HFV flow (cells, faces and fracture
    * unknowns together; symmetric positive definite), with aggregates
-   * coarser than ML's default.
+   * coarser than ML's default and the smoother @p smoother.
    */
   void
-  initialize_pressure_amg(TrilinosWrappers::PreconditionAMG    &amg,
-                          const TrilinosWrappers::SparseMatrix &matrix);
+  initialize_pressure_amg(
+    TrilinosWrappers::PreconditionAMG    &amg,
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const PressureSmoother smoother = PressureSmoother::chebyshev);
 
   /**
    * Solves @p matrix @p x = @p rhs by MUMPS (Trilinos' Amesos) on the ranks

@@ -118,17 +118,18 @@ namespace PolyFrac
    * Unknowns::all the matrix depends on Δt only: its UMFPACK factorisation
    * is made once and reused by every step of the same Δt. The fixed-stress
    * half is factorised at every call (its apertures and fracture storage
-   * change), or, with Linear solver/Method = AMG, solved by MINRES with
+   * change), or, with Linear solver/Method = AMG, solved by GMRES with
    * the block-diagonal preconditioner diag(I, AMG(Ŝ)) of the scaled
    * system [Ã, B̃ᵀ; B̃, −C̃] (unit diagonals), Ŝ = C̃ + B̃ B̃ᵀ the Schur
    * complement with Ã replaced by its diagonal I (the bubbles' stiffness
    * is local and well conditioned; B̃ B̃ᵀ couples the two cells of each
-   * bubble's face).
+   * bubble's face), one ML V-cycle with ILU(0) smoothing for Ŝ⁻¹, started
+   * from the coupling iterate.
    *
    * On several ranks each rank adds the parts of its own cells (their
    * stiffness, bubbles, volume couplings and flow rows) on the pattern
    * united over the ranks, the parts are summed (sum_over_ranks()), and
-   * every rank factorises, or solves by MINRES, the whole system by itself:
+   * every rank factorises, or solves by GMRES, the whole system by itself:
    * the answers are those of one rank, but nothing of this system is
    * divided among the ranks yet.
    *
@@ -181,13 +182,17 @@ namespace PolyFrac
     /**
      * Unknowns::bubbles_and_pressures: the bubbles @p s and pressures
      * @p p of the flow step @p data from the start of the step
-     * (@p before, @p p_before) at the mechanics iterate @p u_k.
+     * (@p before, @p p_before) at the mechanics iterate @p u_k. GMRES
+     * (iterative) starts from the iterate's bubbles and pressures
+     * (u_k.face_bubbles, @p p_k), which leave a residual of the size of
+     * the coupling iteration's increment.
      */
     void
     solve_bubbles_and_pressures(const FlowStepData         &data,
                                 const MechanicalState<dim> &before,
                                 const Vector<double>       &p_before,
                                 const MechanicalState<dim> &u_k,
+                                const Vector<double>       &p_k,
                                 Vector<double>             &s,
                                 Vector<double>             &p);
 
@@ -210,12 +215,6 @@ namespace PolyFrac
       return factorisations;
     }
 
-    /** MINRES iterations so far (Method = AMG, fixed-stress half). */
-    unsigned int
-    n_minres_iterations() const
-    {
-      return minres_iterations;
-    }
 
   private:
     /** The constraints of the step (with Unknowns::all the Dirichlet data
@@ -246,17 +245,19 @@ namespace PolyFrac
     const Vector<double> &
     loads_at(const double time);
 
-    /** MINRES on the scaled system S K_c S @p x = @p rhs (iterative). */
+    /** GMRES on the scaled system S K_c S @p x = @p rhs (iterative),
+     * from @p x, preconditioned on the right. */
     void
-    minres_solve(const Vector<double> &rhs, Vector<double> &x);
+    gmres_solve(const Vector<double> &rhs, Vector<double> &x);
 
     /** Ŝ = C̃ + B̃ B̃ᵀ of the scaled constrained matrix, and its AMG. */
     void
     make_schur_preconditioner();
 
-    /** Solves K x = @p rhs with the prescribed values of #constraints. */
+    /** Solves K x = @p rhs with the prescribed values of #constraints;
+     * GMRES (iterative) starts from @p guess if it is not empty. */
     Vector<double>
-    solve(Vector<double> &rhs);
+    solve(Vector<double> &rhs, const Vector<double> &guess = {});
 
     /** Adds the pressure rows' right-hand side −Δt h − b D_s s^{n−1} to
      * @p rhs. */
@@ -295,13 +296,11 @@ namespace PolyFrac
      * iteration of a step asks for the same). */
     Vector<double> bubble_loads;
     double         loads_time = std::numeric_limits<double>::quiet_NaN();
-    /** Whether the fixed-stress half is solved by MINRES (Method = AMG). */
+    /** Whether the fixed-stress half is solved by GMRES (Method = AMG). */
     const bool iterative;
     /** Ŝ of the preconditioner and its AMG (iterative). */
     TrilinosWrappers::SparseMatrix    schur;
     TrilinosWrappers::PreconditionAMG schur_amg;
-    /** MINRES iterations so far (iterative). */
-    unsigned int minres_iterations = 0;
     /** Δt of the factorisation of Unknowns::all (0: none yet). */
     double       factorised_step = 0;
     unsigned int factorisations  = 0;
