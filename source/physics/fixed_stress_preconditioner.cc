@@ -74,7 +74,9 @@ namespace PolyFrac
     if (diagonal_schur)
       return mechanics_solver.factorise(mechanics);
     trilinos_schur.reinit(schur);
-    initialize_pressure_amg(amg, trilinos_schur);
+    initialize_pressure_amg(amg,
+                            trilinos_schur,
+                            PressureSmoother::incomplete_lu);
     return mechanics_solver.factorise(mechanics);
   }
 

@@ -30,9 +30,9 @@ namespace PolyFrac
    * on J P⁻¹ needs few iterations as the mesh is refined and where the
    * matrix is nearly incompressible (small M).
    *
-   * P⁻¹ r: one V-cycle of ML's AMG on −S̃ (the HFV operator with its
-   * storage: symmetric positive definite; its diagonal if the pressures
-   * are held) for the pressures, then the
+   * P⁻¹ r: one V-cycle of ML's AMG with ILU(0) smoothing on −S̃ (the HFV
+   * operator with its storage: symmetric positive definite; its diagonal
+   * if the pressures are held) for the pressures, then the
    * mechanics under their load by a direct factorisation of K, which is
    * the contact system with its active set (small beside the pressures in
    * 3D: the hybrid pressure unknowns are on every face).
