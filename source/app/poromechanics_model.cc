@@ -144,7 +144,6 @@ namespace PolyFrac
         using Unknowns = typename BiotSystem<dim>::Unknowns;
         system =
           std::make_unique<BiotSystem<dim>>(prm.solver,
-                                            prm,
                                             *discretization.dofs,
                                             pressure_dofs,
                                             flow,

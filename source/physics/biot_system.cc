@@ -13,7 +13,6 @@ namespace PolyFrac
 {
   template <int dim>
   BiotSystem<dim>::BiotSystem(const LinearSolverParameters &solver,
-                              const ParameterContext       &context,
                               const DoFMap<dim>            &dofs,
                               const PressureDoFMap<dim>    &pressure_dofs,
                               const Flow<dim>              &flow,
@@ -22,7 +21,6 @@ namespace PolyFrac
                               const FaceBubbles<dim>       &bubbles,
                               const Unknowns                unknowns)
     : solver(solver)
-    , context(context)
     , dofs(dofs)
     , pressure_dofs(pressure_dofs)
     , flow(flow)

@@ -8,7 +8,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <polyfrac/base/parameter_context.h>
 #include <polyfrac/base/solver_parameters.h>
 #include <polyfrac/dofs/dof_map.h>
 #include <polyfrac/dofs/pressure_dof_map.h>
@@ -134,7 +133,7 @@ namespace PolyFrac
    * divided among the ranks yet.
    *
    * @code
-   *   BiotSystem<dim> system(prm.solver, prm, dofs, pressure_dofs, flow,
+   *   BiotSystem<dim> system(prm.solver, dofs, pressure_dofs, flow,
    * coupling, elasticity, bubbles, BiotSystem<dim>::Unknowns::all);
    * system.step(t_new, dt, state, pressure, new_state, new_pressure);
    * @endcode
@@ -153,10 +152,8 @@ namespace PolyFrac
       bubbles_and_pressures
     };
 
-    /** Solved by @p solver; @p context names the file in messages. All
-     * arguments must outlive this object. */
+    /** Solved by @p solver. All arguments must outlive this object. */
     BiotSystem(const LinearSolverParameters &solver,
-               const ParameterContext       &context,
                const DoFMap<dim>            &dofs,
                const PressureDoFMap<dim>    &pressure_dofs,
                const Flow<dim>              &flow,
@@ -215,7 +212,6 @@ namespace PolyFrac
       return factorisations;
     }
 
-
   private:
     /** The constraints of the step (with Unknowns::all the Dirichlet data
      * of u at the time of @p data; the prescribed pressures), in the
@@ -268,7 +264,6 @@ namespace PolyFrac
                  Vector<double>             &rhs) const;
 
     const LinearSolverParameters &solver;
-    const ParameterContext       &context;
     const DoFMap<dim>            &dofs;
     const PressureDoFMap<dim>    &pressure_dofs;
     const Flow<dim>              &flow;
