@@ -285,50 +285,61 @@ namespace PolyFrac
 
 
 
-  template <int dim>
   void
-  BiotSystem<dim>::make_schur_preconditioner()
+  make_schur_approximation(const SparseMatrix<double>      &matrix,
+                           const types::global_dof_index    n_s,
+                           const AffineConstraints<double> &constraints,
+                           SparsityPattern                 &sparsity,
+                           SparseMatrix<double>            &schur)
   {
-    // The pressure rows of the scaled matrix: −C̃ on the pressures, B̃ on
-    // the bubbles (n_u = 0 here: bubbles first, then pressures).
-    const types::global_dof_index offset = n_s;
+    // The pressure rows: −C̃ on the pressures, B̃ on the bubbles.
+    const types::global_dof_index n_p = matrix.m() - n_s;
     DynamicSparsityPattern        pattern(n_p);
     for (types::global_dof_index i = 0; i < n_p; ++i)
-      for (auto entry = constrained_matrix.begin(offset + i);
-           entry != constrained_matrix.end(offset + i);
+      for (auto entry = matrix.begin(n_s + i); entry != matrix.end(n_s + i);
            ++entry)
-        if (entry->column() >= offset)
-          pattern.add(i, entry->column() - offset);
+        if (entry->column() >= n_s)
+          pattern.add(i, entry->column() - n_s);
+    // The columns of B̃ᵀ (a bubble's row restricted to the pressures).
     std::vector<std::vector<std::pair<types::global_dof_index, double>>>
       coupling(n_s);
     for (types::global_dof_index j = 0; j < n_s; ++j)
-      for (auto entry = constrained_matrix.begin(j);
-           entry != constrained_matrix.end(j);
-           ++entry)
-        if (entry->column() >= offset && entry->value() != 0)
-          coupling[j].emplace_back(entry->column() - offset, entry->value());
+      for (auto entry = matrix.begin(j); entry != matrix.end(j); ++entry)
+        if (entry->column() >= n_s && entry->value() != 0)
+          coupling[j].emplace_back(entry->column() - n_s, entry->value());
     for (const auto &column : coupling)
       for (const auto &[a, unused_a] : column)
         for (const auto &[b, unused_b] : column)
           pattern.add(a, b);
-    SparsityPattern sparsity_hat;
-    sparsity_hat.copy_from(pattern);
-    SparseMatrix<double> hat(sparsity_hat);
+    sparsity.copy_from(pattern);
+    schur.reinit(sparsity);
     for (types::global_dof_index i = 0; i < n_p; ++i)
-      for (auto entry = constrained_matrix.begin(offset + i);
-           entry != constrained_matrix.end(offset + i);
+      for (auto entry = matrix.begin(n_s + i); entry != matrix.end(n_s + i);
            ++entry)
-        if (entry->column() >= offset)
-          hat.add(i, entry->column() - offset, -entry->value());
+        if (entry->column() >= n_s)
+          schur.add(i, entry->column() - n_s, -entry->value());
     for (const auto &column : coupling)
       for (const auto &[a, value_a] : column)
         for (const auto &[b, value_b] : column)
-          hat.add(a, b, value_a * value_b);
+          schur.add(a, b, value_a * value_b);
     // A prescribed pressure's row is +1 in the system: +1 in Ŝ too (the
-    // row above gave −1, which made the preconditioner indefinite).
+    // rows above give −1, which makes the preconditioner indefinite).
     for (const auto &line : constraints.get_lines())
-      if (line.index >= offset)
-        hat.set(line.index - offset, line.index - offset, 1.);
+      if (line.index >= n_s)
+        schur.set(line.index - n_s, line.index - n_s, 1.);
+  }
+
+
+
+  template <int dim>
+  void
+  BiotSystem<dim>::make_schur_preconditioner()
+  {
+    // n_u = 0 here: bubbles first, then pressures.
+    SparsityPattern      sparsity_hat;
+    SparseMatrix<double> hat;
+    make_schur_approximation(
+      constrained_matrix, n_s, constraints, sparsity_hat, hat);
     // No drop tolerance: the scaled entries are of order one, but keep
     // every one (Flow's reason). ILU(0) smoothing: with Chebyshev, the
     // solves of B6's 17k tetrahedra took 725 MINRES iterations each, with

@@ -1,6 +1,7 @@
 #ifndef polyfrac_physics_biot_system_h
 #define polyfrac_physics_biot_system_h
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -84,6 +85,24 @@ namespace PolyFrac
       for (auto entry = block.begin(row); entry != block.end(row); ++entry)
         visit(offset + row, offset + entry->column(), entry);
   }
+
+  /**
+   * Ŝ = C̃ + B̃ B̃ᵀ into @p schur (its pattern into @p sparsity): the Schur
+   * complement of the symmetric saddle-point @p matrix = [Ã, B̃ᵀ; B̃, −C̃]
+   * with Ã, its first @p n_s rows and columns, replaced by the identity
+   * (the scaled bubble block, whose diagonal is 1). The unknowns of
+   * @p constraints (numbered as the rows of @p matrix) have unit rows and
+   * columns in @p matrix; their pressure rows are +1 in Ŝ as well, so
+   * that Ŝ is symmetric positive definite where C̃ is positive
+   * semidefinite and B̃ᵀ and C̃ leave no pressure undetermined. The
+   * pressure block of BiotSystem's preconditioner.
+   */
+  void
+  make_schur_approximation(const SparseMatrix<double>      &matrix,
+                           const types::global_dof_index    n_s,
+                           const AffineConstraints<double> &constraints,
+                           SparsityPattern                 &sparsity,
+                           SparseMatrix<double>            &schur);
 
   /**
    * The implicit Euler step of poroelasticity as one symmetric saddle-point
