@@ -483,7 +483,8 @@ namespace PolyFrac
                                            const Vector<double>       &s,
                                            const MechanicalState<dim> &start,
                                            const MechanicalState<dim> &guess,
-                                           MechanicalState<dim>       &result)
+                                           const double          tolerance,
+                                           MechanicalState<dim> &result)
   {
     Vector<double> load = coupling.pressure_load(flow.cell_pressures(p),
                                                  flow.biot_coefficients(),
@@ -504,7 +505,7 @@ namespace PolyFrac
     const unsigned int before = contact->n_newton_iterations();
     std::ostringstream log;
     result = start;
-    contact->solve(result, log, &guess);
+    contact->solve(result, log, &guess, tolerance);
     return contact->n_newton_iterations() - before;
   }
 
@@ -546,9 +547,14 @@ namespace PolyFrac
                   s_image.size(),
                   s_next,
                   p_next);
+            // Inexact inner solves: the contact solve needs no more
+            // accuracy than the coupling iterate has (η times the last
+            // increment; η at the first iteration).
+            const double inner_tolerance =
+              prm.nonlinear.forcing_term * (k == 1 ? 1. : increment);
             MechanicalState<dim> u_next;
-            *report.newton_iterations +=
-              solve_mechanics(t, p_next, s_next, state, u_k, u_next);
+            *report.newton_iterations += solve_mechanics(
+              t, p_next, s_next, state, u_k, inner_tolerance, u_next);
             u_next.face_bubbles = s_next;
             increment =
               relative_increment(join(u_next.displacement, s_next),
@@ -760,7 +766,7 @@ namespace PolyFrac
       data = fixed_stress_data(t_new, time_step, state, pressure, u_k, p_k);
       if (system)
         system->solve_bubbles_and_pressures(
-          data, state, pressure, u_k, p_k, s, p);
+          data, state, pressure, u_k, p_k, prm.nonlinear.forcing_term, s, p);
       else
         {
           data.increment_mobility = stabilisation;

@@ -54,6 +54,7 @@ namespace PolyFrac
     , dofs(dofs)
     , elasticity(mechanics, solver, context, geometry, network, dofs)
     , friction(FrictionLaws::create(prm, context, geometry, network))
+    , newton_tolerance(nonlinear.tolerance)
   {
     const unsigned int n_faces = network.n_fracture_faces();
     for (unsigned int i = 0; i < n_faces; ++i)
@@ -468,7 +469,7 @@ namespace PolyFrac
         const double eta    = nonlinear.forcing_term;
         const double linear = eta * R.complementarity;
         const double enough =
-          std::max(0.1 * nonlinear.tolerance,
+          std::max(0.1 * newton_tolerance,
                    given_states ? std::max(eta * eta, linear) : linear) *
           R.momentum_scale;
         const auto krylov =
@@ -868,8 +869,8 @@ namespace PolyFrac
             continue;
           }
 
-        if (states == history.last && R.momentum < nonlinear.tolerance &&
-            R.complementarity < nonlinear.tolerance)
+        if (states == history.last && R.momentum < newton_tolerance &&
+            R.complementarity < newton_tolerance)
           return true;
 
         // The active set cycles (a state seen before) or stagnates (no new
@@ -974,8 +975,10 @@ namespace PolyFrac
   void
   ContactMechanics<dim>::solve(MechanicalState<dim>       &state,
                                std::ostream               &out,
-                               const MechanicalState<dim> *guess)
+                               const MechanicalState<dim> *guess,
+                               const double                tolerance)
   {
+    newton_tolerance = std::max(nonlinear.tolerance, tolerance);
     begin_step(state);
     if (guess && prm.n_load_steps == 1)
       set_solution(*guess);
@@ -1055,6 +1058,7 @@ namespace PolyFrac
   ContactMechanics<dim>::quasi_static_step(MechanicalState<dim> &state,
                                            std::ostream         &out)
   {
+    newton_tolerance = nonlinear.tolerance;
     begin_step(state);
     // A failed step leaves what later steps inherit (the β divided where
     // Newton cycled) as it was.

@@ -317,14 +317,16 @@ namespace PolyFrac
     /** The mechanics at time @p t under the pressures @p p and the pull of
      * the face bubbles @p s (if any), from the state
      * @p start of the step (the Coulomb slip reference), Newton starting
-     * from @p guess (the previous coupling iterate); returns the Newton
-     * iterations (contact). */
+     * from @p guess (the previous coupling iterate) and stopping at the
+     * relative residual @p tolerance if that is above Nonlinear
+     * solver/Tolerance; returns the Newton iterations (contact). */
     unsigned int
     solve_mechanics(const double                t,
                     const Vector<double>       &p,
                     const Vector<double>       &s,
                     const MechanicalState<dim> &start,
                     const MechanicalState<dim> &guess,
+                    const double                tolerance,
                     MechanicalState<dim>       &result);
 
     /** Adds the fluid volumes of the step to (@p u_new, @p p_new) from

@@ -157,12 +157,16 @@ namespace PolyFrac
      * each Newton iteration to @p out. With one load step, Newton may start
      * from @p guess instead (a nearby solution, e.g. the previous iterate of
      * a coupling iteration); @p state stays the reference of the slip
-     * increment.
+     * increment. With @p tolerance above Nonlinear solver/Tolerance, Newton
+     * stops at that relative residual instead: an inner solve of an outer
+     * iteration whose own error is larger (the fixed-stress coupling
+     * iterations of PoromechanicsModel).
      */
     void
     solve(MechanicalState<dim>       &state,
           std::ostream               &out,
-          const MechanicalState<dim> *guess = nullptr);
+          const MechanicalState<dim> *guess     = nullptr,
+          const double                tolerance = 0);
 
     /**
      * One quasi-static time step (Contact/Quasi-static time steps): Newton
@@ -607,6 +611,9 @@ namespace PolyFrac
     /** Multipliers and states to start from (start_from()). */
     std::optional<MultiplierField<dim>> initial_guess;
     unsigned int                        total_iterations = 0;
+    /** The relative residuals at which newton() stops: Nonlinear
+     * solver/Tolerance, or solve()'s larger tolerance. */
+    double newton_tolerance;
     /** How often β was divided by 10 on active-set cycling. */
     unsigned int n_beta_reductions = 0;
     /** How many condensed steps fell back to UMFPACK (GMRES failed). */

@@ -201,7 +201,10 @@ namespace PolyFrac
      * (@p before, @p p_before) at the mechanics iterate @p u_k. GMRES
      * (iterative) starts from the iterate's bubbles and pressures
      * (u_k.face_bubbles, @p p_k), which leave a residual of the size of
-     * the coupling iteration's increment.
+     * the coupling iteration's increment, and stops once that residual is
+     * reduced by the factor @p forcing (Nonlinear solver/Forcing term) or
+     * below Linear solver/Tolerance relative to the right-hand side,
+     * whichever is larger.
      */
     void
     solve_bubbles_and_pressures(const FlowStepData         &data,
@@ -209,6 +212,7 @@ namespace PolyFrac
                                 const Vector<double>       &p_before,
                                 const MechanicalState<dim> &u_k,
                                 const Vector<double>       &p_k,
+                                const double                forcing,
                                 Vector<double>             &s,
                                 Vector<double>             &p);
 
@@ -261,18 +265,25 @@ namespace PolyFrac
     loads_at(const double time);
 
     /** GMRES on the scaled system S K_c S @p x = @p rhs (iterative),
-     * from @p x, preconditioned on the right. */
+     * from @p x, preconditioned on the right, to @p forcing times the
+     * initial residual or Linear solver/Tolerance times |@p rhs|,
+     * whichever is larger. */
     void
-    gmres_solve(const Vector<double> &rhs, Vector<double> &x);
+    gmres_solve(const Vector<double> &rhs,
+                const double          forcing,
+                Vector<double>       &x);
 
     /** Ŝ = C̃ + B̃ B̃ᵀ of the scaled constrained matrix, and its AMG. */
     void
     make_schur_preconditioner();
 
     /** Solves K x = @p rhs with the prescribed values of #constraints;
-     * GMRES (iterative) starts from @p guess if it is not empty. */
+     * GMRES (iterative) starts from @p guess if it is not empty and
+     * stops at @p forcing times the residual of @p guess (gmres_solve()). */
     Vector<double>
-    solve(Vector<double> &rhs, const Vector<double> &guess = {});
+    solve(Vector<double>       &rhs,
+          const Vector<double> &guess   = {},
+          const double          forcing = 0);
 
     /** Adds the pressure rows' right-hand side −Δt h − b D_s s^{n−1} to
      * @p rhs. */
