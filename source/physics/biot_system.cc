@@ -283,8 +283,10 @@ namespace PolyFrac
         AssertThrow(false,
                     ExcMessage("The fixed-stress flow step (face bubbles, "
                                "pressures): GMRES with the block "
-                               "preconditioner did not reach Linear "
-                               "solver/Tolerance in " +
+                               "preconditioner did not reach its tolerance "
+                               "(Linear solver/Tolerance, or Nonlinear "
+                               "solver/Forcing term times the residual of "
+                               "the coupling iterate) in " +
                                std::to_string(control.last_step()) +
                                " iterations; raise Maximum iterations or use "
                                "Method = direct."));
