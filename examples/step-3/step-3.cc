@@ -541,14 +541,14 @@ main(int argc, char **argv)
  *   First step, relative increment per coupling iteration:
  *        k        m=0        m=5
  *        1   1.37e+00   1.37e+00
- *        2   1.48e+00   1.48e+00
- *        3   1.19e+00   1.19e+00
- *        5   1.62e-01   1.62e-01
- *       10   7.02e-03   6.00e-03
- *       15   2.44e-03   2.28e-04
- *       20   1.19e-03   5.33e-07
- *       24   6.71e-04   4.41e-09
- *       25   5.80e-04
+ *        2   1.48e+00   1.14e+00
+ *        3   1.19e+00   8.02e-01
+ *        5   1.62e-01   1.76e-01
+ *       10   7.02e-03   3.90e-02
+ *       15   2.44e-03   2.89e-03
+ *       20   1.19e-03   9.09e-06
+ *       25   5.80e-04   1.93e-08
+ *       26   5.02e-04   7.53e-09
  *       30   2.82e-04
  *       35   1.37e-04
  *       40   6.62e-05
@@ -565,22 +565,22 @@ main(int argc, char **argv)
  *       95   2.29e-08
  *      100   1.11e-08
  *      101   9.58e-09
- *   Mean factor per iteration from iteration 2 on: m=0 0.827, m=5 0.410
+ *   Mean factor per iteration from iteration 2 on: m=0 0.827, m=5 0.456
  *   Time loop, m = 5 and m = 0 (at most 120 iterations):
  *        t   iterations   Newton   faces open/stick/slip   mean p_f    mean d_f   energy residual
  *           m=5    m=0      m=5                            (MPa)       (mm)       m=5      m=0
- *        1     24    101       57            2 / 0 / 4       1.3924     0.1013   -1.2e-11  4.8e-10
- *        2     16     89       33            2 / 0 / 4       1.4167     0.1027    1.0e-10 -4.8e-10
- *        3     15     42       32            3 / 0 / 3       1.4306     0.1041   -3.7e-12 -2.4e-10
+ *        1     26    101       58            2 / 0 / 4       1.3924     0.1013    1.5e-10  4.8e-10
+ *        2     16     89       32            2 / 0 / 4       1.4167     0.1027    1.0e-10 -4.8e-10
+ *        3     15     42       32            3 / 0 / 3       1.4306     0.1041    1.0e-10 -2.4e-10
  *        4     15     40       31            3 / 0 / 3       1.4400     0.1055    4.7e-11 -2.9e-10
- *        5     15     28       33            4 / 0 / 2       1.4462     0.1069    2.1e-11 -2.4e-10
- *        6     15     28       31            4 / 0 / 2       1.4509     0.1083   -1.4e-12 -2.6e-10
- *        7     15     28       31            4 / 0 / 2       1.4557     0.1097   -1.4e-12 -2.6e-10
+ *        5     15     28       32            4 / 0 / 2       1.4462     0.1069   -8.8e-12 -2.4e-10
+ *        6     15     28       32            4 / 0 / 2       1.4509     0.1083   -1.4e-12 -2.6e-10
+ *        7     15     28       32            4 / 0 / 2       1.4557     0.1097   -1.4e-12 -2.6e-10
  *        8     15     28       31            4 / 0 / 2       1.4605     0.1111   -1.1e-12 -2.5e-10
- *        9     14     28       29            4 / 0 / 2       1.4653     0.1125    9.2e-11 -2.4e-10
- *       10     14     28       30            4 / 0 / 2       1.4701     0.1140    9.1e-11 -2.3e-10
+ *        9     14     28       30            4 / 0 / 2       1.4653     0.1125    9.2e-11 -2.4e-10
+ *       10     14     28       29            4 / 0 / 2       1.4701     0.1140    9.1e-11 -2.3e-10
  *   Both runs converged in every step; the plain iteration needed more iterations in every step
- *   Mean p_f of the two runs: relative difference at most 4e-08 (bound 1e-06)
+ *   Mean p_f of the two runs: relative difference at most 5e-08 (bound 1e-06)
  *   Energy residual of both runs: at most 5e-10 in magnitude (bound 1e-07)
  *   Faces slip in 10 of 10 steps, faces are open in every step
  *
@@ -596,13 +596,19 @@ main(int argc, char **argv)
  * injection: the fracture pressure rises from 0 to 1.39 MPa in the mean,
  * two faces open and the other four slip.
  *
- * For the first iterations both runs are the same: each of them changes
- * the normal state of some face (the pressure opens the fracture face by
- * face), so Anderson's history is cleared every time and its iterate is
- * the plain one. Once the states are settled, the plain iteration
- * contracts by a steady factor of about 0.86 per iteration and needs 101
- * iterations, while the least-squares combination of the last five steps
- * drops the increment superlinearly, to 4e-9 at iteration 24.
+ * From the second iteration on the runs differ: Anderson's least-squares
+ * combination of the last five steps replaces the plain image, also in
+ * the iterations in which the pressure opens a fracture face (its history
+ * is kept when contact states change). Once the states are settled, the
+ * plain iteration contracts by a steady factor of about 0.86 per
+ * iteration and needs 101 iterations, while Anderson drops the increment
+ * superlinearly, to 8e-9 at iteration 26. The increment is measured on
+ * the images of the flow half (image minus iterate), not on Anderson's
+ * extrapolated iterate: a least-squares step that barely moves would
+ * otherwise pass for convergence (with the history kept and the old
+ * measure, the equilibrium start of prm/poromechanics-2d-slip.prm
+ * stopped after two iterations, and its first step 0.2 % away from the
+ * fixed point in the fracture pressure).
  *
  * Each flow half of an iteration solves for the pressures *and* the
  * normal face bubbles of the displacement (doc/scheme.md §10): one scalar
@@ -637,7 +643,7 @@ main(int argc, char **argv)
  * faces in contact slip in every step (the Coulomb law acts on the slip
  * *increment* of the step, and the rising pressure unloads them).
  *
- * The energy balance. The residual is at most 1e-10 in magnitude with
+ * The energy balance. The residual is at most 1.5e-10 in magnitude with
  * Anderson and 5e-10 with the plain iteration, far below the bound 1e-7.
  * It measures how well the step's coupled equations hold, not a
  * discretisation error: tighten `Nonlinear solver/Coupling tolerance` and
@@ -646,7 +652,7 @@ main(int argc, char **argv)
  * because its stopping test is weaker: for an iteration that contracts by
  * ρ per iteration the error is about ρ/(1 − ρ) times the last increment,
  * while Anderson's last increments fall superlinearly. For the same
- * reason the two runs agree to 4e-8 in the mean fracture pressure, not to
+ * reason the two runs agree to 5e-8 in the mean fracture pressure, not to
  * 1e-8 (the program allows 100 × the tolerance).
  *
  *

@@ -11,17 +11,6 @@ namespace PolyFrac
 
 
 
-  void
-  AndersonAcceleration::clear()
-  {
-    previous_g.reinit(0);
-    previous_f.reinit(0);
-    dg.clear();
-    df.clear();
-  }
-
-
-
   Vector<double>
   AndersonAcceleration::next(const Vector<double> &x, const Vector<double> &g)
   {

@@ -47,10 +47,6 @@ namespace PolyFrac
     Vector<double>
     next(const Vector<double> &x, const Vector<double> &g);
 
-    /** Forgets the history (the next call is a plain step). */
-    void
-    clear();
-
   private:
     const unsigned int depth;
     /** The previous image and residual (empty before the first call). */
