@@ -400,6 +400,32 @@ namespace PolyFrac
 
 
   template <int dim>
+  void
+  PoromechanicsModel<dim>::update_open_patch_relaxation(
+    const MechanicalState<dim> &u)
+  {
+    const unsigned int n_faces = u.contact.normal.size();
+    std::vector<bool>  open(n_faces);
+    for (unsigned int i = 0; i < n_faces; ++i)
+      open[i] = u.contact.normal[i] == NormalState::open;
+    if (open == open_patch)
+      return;
+    open_patch = open;
+    if (std::find(open.begin(), open.end(), true) == open.end())
+      return;
+    std::vector<double> unit(n_faces, 0.);
+    for (unsigned int i = 0; i < n_faces; ++i)
+      unit[i] = open[i] ? 1. : 0.;
+    const std::vector<double> opening = coupling.normal_jumps(
+      contact->linear_response(u, coupling.pressure_load({}, {}, unit)));
+    for (unsigned int i = 0; i < n_faces; ++i)
+      if (open[i])
+        open_patch_relaxation[i] = std::max(-opening[i], 0.);
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   PoromechanicsModel<dim>::apertures(const MechanicalState<dim> &u) const
   {
@@ -462,10 +488,10 @@ namespace PolyFrac
       {
         data.apertures[i] = d_k[i];
         // A face in contact keeps its normal jump whatever p_f is: its
-        // relaxation is 0, an open face's the probed compliance.
+        // relaxation is 0, an open face's the compliance of the open patch.
         const double a           = u_k.contact.normal.empty() ||
                              u_k.contact.normal[i] == NormalState::open ?
-                                     fracture_relaxation[i] :
+                                     open_patch_relaxation[i] :
                                      0.;
         data.fracture_storage[i] = a + flow.fracture_fluid_storage(d_k[i]);
         data.fracture_rhs[i] =
@@ -526,6 +552,8 @@ namespace PolyFrac
     double               increment = 0;
     AndersonAcceleration anderson(prm.nonlinear.anderson_depth);
     StepProgress         progress;
+    open_patch_relaxation = fracture_relaxation;
+    open_patch.clear();
     try
       {
         for (unsigned int k = 1; k <= prm.nonlinear.max_coupling_iterations;
@@ -553,6 +581,8 @@ namespace PolyFrac
             *report.newton_iterations += solve_mechanics(
               t, p_next, s_next, state, u_k, inner_tolerance, u_next);
             u_next.face_bubbles = s_next;
+            if (contact)
+              update_open_patch_relaxation(u_next);
             // The residual of the flow half (its image of the bubbles and
             // the pressures minus the iterate) and the displacement's
             // change: not the extrapolated bubbles' change, which a

@@ -957,6 +957,37 @@ namespace PolyFrac
 
 
   template <int dim>
+  Vector<double>
+  ContactMechanics<dim>::linear_response(const MechanicalState<dim> &state,
+                                         const Vector<double> &load_change)
+  {
+    const double   norm = load_change.l2_norm();
+    Vector<double> response(load_change.size());
+    if (norm == 0)
+      return response;
+    set_solution(state);
+    // The faces' linearisation at the state, and a right-hand side that is
+    // the load change alone (the state's own residual is the solve's
+    // tolerance), scaled to the momentum scale so that the step is solved
+    // as accurately as a Newton step on states that are given.
+    Residual     R     = residual(solution, 1., &state.contact);
+    const double scale = R.momentum_scale / norm;
+    R.vector           = 0;
+    for (unsigned int k = 0; k < load_change.size(); ++k)
+      R.vector(k) = -scale * load_change(k);
+    for (const auto &[dof, value] : dirichlet)
+      R.vector(dof) = 0;
+    R.complementarity = 0;
+    Vector<double> step;
+    linear_step(R, 0, true, step);
+    for (unsigned int k = 0; k < response.size(); ++k)
+      response(k) = step(k) / scale;
+    return response;
+  }
+
+
+
+  template <int dim>
   void
   ContactMechanics<dim>::set_solution(const MechanicalState<dim> &state)
   {

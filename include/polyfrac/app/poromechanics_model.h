@@ -303,6 +303,17 @@ namespace PolyFrac
     fracture_compliance();
 
     /**
+     * The relaxation a_σ of the fixed-stress iteration at the mechanics
+     * iterate @p u: on its open faces, the opening per unit pressure on
+     * all of them while the other faces keep their contact states
+     * (ContactMechanics::linear_response(): the compliance of the open
+     * patch, not of a fracture whose every face is free); computed again
+     * only when the set of open faces changes.
+     */
+    void
+    update_open_patch_relaxation(const MechanicalState<dim> &u);
+
+    /**
      * The flow step data of the fixed-stress iteration from @p start
      * (u^{n−1}, with pressures @p p_start) at the iterate @p u_k, @p p_k.
      */
@@ -374,8 +385,13 @@ namespace PolyFrac
     const std::vector<double> increment_mobility_weights;
     /** The largest λ + 2μ of the cells (scales()). */
     const double largest_modulus;
-    /** a_σ per fracture face. */
+    /** a_σ per fracture face, every face free (fracture_compliance()). */
     std::vector<double> fracture_relaxation;
+    /** a_σ of the fixed-stress iteration (update_open_patch_relaxation()),
+     * from fracture_relaxation at the start of each step. */
+    std::vector<double> open_patch_relaxation;
+    /** The open faces open_patch_relaxation was computed for. */
+    std::vector<bool> open_patch;
     /** The state: displacement, multipliers, contact states. */
     MechanicalState<dim> state;
     /** The state: pressures (PressureDoFMap numbering). */

@@ -245,6 +245,21 @@ namespace PolyFrac
     }
 
     /**
+     * The response of the displacement to an additional load
+     * @p load_change on the displacement unknowns at @p state, a solution
+     * of the last solve() (its loads and slip reference), with the contact
+     * states of @p state held: one Newton step with their generalised
+     * Jacobian, by the linear solver of the Newton steps (faces in contact
+     * keep their normal jump, stick faces their tangential one). It is the
+     * compliance of the open faces as a patch held by the faces around
+     * them, which a relaxation of the fixed-stress split needs
+     * (PoromechanicsModel).
+     */
+    Vector<double>
+    linear_response(const MechanicalState<dim> &state,
+                    const Vector<double>       &load_change);
+
+    /**
      * For a Newton method on a larger system whose first unknowns are
      * this one's (u, λ), e.g. the coupled poromechanical step
      * (PoromechanicalNewton): adds the couplings of the displacement and
