@@ -19,6 +19,14 @@ namespace PolyFrac
     /** Steps shorter than this fraction of a step count as landing on a
      * time already (DiscreteTime merges such a last step too). */
     constexpr double landing_tolerance = 1e-10;
+
+    /** The share of an iteration bound above which a converged step is
+     * hard (GEOS's default dtCutIterLimit). */
+    unsigned int
+    hard_limit(const unsigned int max_iterations)
+    {
+      return 7 * max_iterations / 10;
+    }
   } // namespace
 
 
@@ -27,6 +35,9 @@ namespace PolyFrac
     : data(prm.time)
     , easy_coupling_iterations(prm.nonlinear.max_coupling_iterations / 2)
     , easy_newton_iterations(prm.nonlinear.max_iterations / 2)
+    , hard_coupling_iterations(
+        hard_limit(prm.nonlinear.max_coupling_iterations))
+    , hard_newton_iterations(hard_limit(prm.nonlinear.max_iterations))
     , nominal_step(level_time_step(prm.time, level))
     , time(0, prm.time.end_time, nominal_step)
     , planned_step(nominal_step)
@@ -96,6 +107,12 @@ namespace PolyFrac
       (!report.newton_iterations ||
        *report.newton_iterations <=
          easy_newton_iterations * report.coupling_iterations.value_or(1));
+    const bool hard =
+      (report.coupling_iterations &&
+       *report.coupling_iterations > hard_coupling_iterations) ||
+      (report.newton_iterations &&
+       *report.newton_iterations >
+         hard_newton_iterations * report.coupling_iterations.value_or(1));
     cuts_of_last_step  = cuts_in_a_row;
     cuts_in_a_row      = 0;
     const double taken = time.get_next_step_size();
@@ -108,11 +125,16 @@ namespace PolyFrac
     AssertThrow(time.is_at_end() || step_number() < data.max_steps,
                 ExcMessage(where.str()));
     // Fixed steps go back to the nominal step after a cut; adaptive ones
-    // grow from the last step after an easy one.
+    // grow from the last step after an easy one and are halved after a
+    // hard one, whose next attempt at the same length would likely fail
+    // near the iteration bound and be cut anyway (B6: 44-49 of 50 coupling
+    // iterations in the steps that converged, 50 in those that did not).
     if (!data.adaptive)
       planned_step = nominal_step;
     else if (easy)
       planned_step = 1.5 * std::max(planned_step, taken);
+    else if (hard)
+      planned_step = taken / 2;
     plan_next_step();
   }
 

@@ -8,6 +8,9 @@
 //   keeps it; a cut one halves it and it grows again only after an easy
 //   step; a Newton step (one coupling iteration, PoromechanicalNewton) is
 //   easy when its Newton iterations are at most half of their maximum;
+// - Adaptive: a hard step (coupling iterations, or Newton iterations per
+//   coupling iteration, above 7/10 of their maximum) halves the next one,
+//   a step between easy and hard keeps it;
 // - Maximum steps: the step that would exceed it throws, naming the entry.
 // Each property is checked here (AssertThrow); the output lists the steps.
 
@@ -126,7 +129,7 @@ namespace
       lengths.push_back(length);
     };
     take(10); // easy (10 <= 20/2): 1 -> 1.5
-    take(11); // hard: keeps 1.5
+    take(11); // neither easy nor hard (11 <= 14): keeps 1.5
     take(2);  // easy: 1.5 -> 2.25
     steps.cut("made up", log);
     take(2); // the cut step, 1.125, then no growth
@@ -181,6 +184,40 @@ namespace
 
 
   void
+  hard_steps_halve_the_next()
+  {
+    const Parameters    prm = adaptive_parameters();
+    TimeStepping        steps(prm, 0);
+    std::vector<double> lengths;
+    const auto          take = [&](const unsigned int coupling,
+                          const unsigned int newton) {
+      StepReport report        = converged(coupling);
+      report.newton_iterations = newton;
+      lengths.push_back(steps.next_time() - steps.current_time());
+      steps.advance(report);
+    };
+    take(15, 15); // hard (15 > 14 coupling iterations): 1 -> 0.5
+    take(14, 14); // neither easy nor hard: keeps 0.5
+    take(10, 10); // easy: 0.5 -> 0.75
+    take(1, 15);  // a Newton step, hard (15 > 14): 0.75 -> 0.375
+    take(3, 45);  // 15 Newton iterations per coupling iteration: hard
+    lengths.push_back(steps.next_time() - steps.current_time());
+    std::cout << "Hard step lengths:";
+    for (const double length : lengths)
+      std::cout << ' ' << length;
+    std::cout << std::endl;
+    const std::vector<double> expected = {1, 0.5, 0.5, 0.75, 0.375, 0.1875};
+    for (unsigned int i = 0; i < expected.size(); ++i)
+      check(same(lengths[i], expected[i]),
+            "step " + std::to_string(i + 1) + " after hard steps is " +
+              std::to_string(lengths[i]) + ", expected " +
+              std::to_string(expected[i]) +
+              " (hard: more than 14 of 20 iterations)");
+  }
+
+
+
+  void
   maximum_steps()
   {
     Parameters prm                        = Testing::default_parameters(2, 2);
@@ -188,13 +225,13 @@ namespace
     prm.time.time_step                    = 0.1;
     prm.time.adaptive                     = true; // not checked before the run
     prm.time.max_steps                    = 3;
-    prm.nonlinear.max_coupling_iterations = 2; // no step is easy
+    prm.nonlinear.max_coupling_iterations = 10; // 6: neither easy nor hard
     TimeStepping steps(prm, 0);
     std::string  message;
     try
       {
         while (!steps.is_at_end())
-          steps.advance(converged(2));
+          steps.advance(converged(6));
       }
     catch (const ExceptionBase &e)
       {
@@ -216,5 +253,6 @@ main()
   cut_then_nominal_step();
   adaptive_steps();
   newton_steps_judged_by_newton_iterations();
+  hard_steps_halve_the_next();
   maximum_steps();
 }

@@ -498,6 +498,21 @@ CASES = {
                section("Flow", Face_bubbles="false") +
                section("Nonlinear solver", Coupling_scheme="monolithic")},
         stage="level"),
+    "coupling_iterations_too_few": case(
+        "`Nonlinear solver/Maximum coupling iterations = 2` for a fractured "
+        "scene whose fixed-stress iteration needs more: every attempt and "
+        "its halvings fail, and the message says whether the increments "
+        "were still falling",
+        ["the fixed-stress iterations did not converge in 2 iterations",
+         "still contracting: it fell from",
+         "raising Nonlinear solver/Maximum coupling iterations may let it "
+         "converge", "It failed after halving the time step 10 times"],
+        files={"scene.prm": section("Model", Model="poromechanics") +
+               SEGMENT + section("Flow", Fracture_source="1e-6") +
+               section("Nonlinear solver", Coupling_scheme="fixed-stress",
+                       Maximum_coupling_iterations="2") +
+               section("Output", Write_VTU="false")},
+        stage="level"),
     "coupling_scheme_unknown": case(
         "`Coupling scheme = newton`",
         ["Coupling scheme", "newton"],

@@ -25,7 +25,11 @@ namespace PolyFrac
    *   coupling iterations and at most half of Maximum iterations of
    *   Newton per coupling iteration, each when the model reports it: a
    *   monolithic Newton step is one coupling iteration), up to Maximum
-   *   time step, and a cut step grows again only after an easy one;
+   *   time step, and a cut step grows again only after an easy one; a
+   *   hard step (converged, but in more than 7/10 of Maximum coupling
+   *   iterations, or of Maximum iterations of Newton per coupling
+   *   iteration: GEOS's dtCutIterLimit) is followed by one half as long,
+   *   before the next attempt fails near the same bound;
    * - every step lands on each of the Output times (and on End time), at
    *   which the state is written; without Output times every step is;
    * - at most Maximum steps steps are taken: then the run stops with a
@@ -147,6 +151,11 @@ namespace PolyFrac
     /** The Newton iterations per coupling iteration above which a step is
      * not easy. */
     const unsigned int easy_newton_iterations;
+    /** The coupling iterations above which a converged step is hard. */
+    const unsigned int hard_coupling_iterations;
+    /** The Newton iterations per coupling iteration above which a
+     * converged step is hard. */
+    const unsigned int hard_newton_iterations;
     /** Time step of the level. */
     const double nominal_step;
     DiscreteTime time;
