@@ -74,8 +74,8 @@ namespace PolyFrac
       if (n < 2)
         return "a single iteration";
       const std::size_t window = std::min<std::size_t>(10, n - 1);
-      const double first = increments[n - 1 - window];
-      const double last  = increments[n - 1];
+      const double      first  = increments[n - 1 - window];
+      const double      last   = increments[n - 1];
       const auto [low, high] =
         std::minmax_element(increments.end() - window, increments.end());
       std::ostringstream trend;
@@ -86,9 +86,9 @@ namespace PolyFrac
               << ", so raising Nonlinear solver/Maximum coupling "
                  "iterations may let it converge";
       else
-        trend << "not contracting: over the last "
-              << count(window, "iteration") << " it stayed between " << *low << " and "
-              << *high << " (contact states that change back and forth "
+        trend << "not contracting: over the last " << count(window, "iteration")
+              << " it stayed between " << *low << " and " << *high
+              << " (contact states that change back and forth "
               << "do this), so a shorter step may converge";
       return trend.str();
     }
