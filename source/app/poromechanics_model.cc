@@ -63,36 +63,6 @@ namespace PolyFrac
       return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
     }
 
-    /** What the last iterations of a failed coupling iteration with the
-     * relative @p increments did: still contracting (by at least half over
-     * the last ten: more iterations may converge) or not (the contact
-     * states may cycle: a shorter step). */
-    std::string
-    describe_trend(const std::vector<double> &increments)
-    {
-      const std::size_t n = increments.size();
-      if (n < 2)
-        return "a single iteration";
-      const std::size_t window = std::min<std::size_t>(10, n - 1);
-      const double      first  = increments[n - 1 - window];
-      const double      last   = increments[n - 1];
-      const auto [low, high] =
-        std::minmax_element(increments.end() - window, increments.end());
-      std::ostringstream trend;
-      trend << std::setprecision(2);
-      if (last <= first / 2)
-        trend << "still contracting: it fell from " << first << " to " << last
-              << " over the last " << count(window, "iteration")
-              << ", so raising Nonlinear solver/Maximum coupling "
-                 "iterations may let it converge";
-      else
-        trend << "not contracting: over the last " << count(window, "iteration")
-              << " it stayed between " << *low << " and " << *high
-              << " (contact states that change back and forth "
-              << "do this), so a shorter step may converge";
-      return trend.str();
-    }
-
     /** How the monolithic Newton step of @p result solved its linear
      * systems: factorisations, or preconditioners and FGMRES iterations. */
     template <int dim>
@@ -651,8 +621,8 @@ namespace PolyFrac
         what << "the fixed-stress iterations did not converge in "
              << prm.nonlinear.max_coupling_iterations
              << " iterations (last relative increment " << increment
-             << ", tolerance " << tolerance << "; "
-             << describe_trend(report.coupling_increments) << ").";
+             << ", tolerance " << tolerance << "; " << report.coupling_trend()
+             << ").";
         report.converged = false;
         report.failure   = what.str();
       }

@@ -60,6 +60,16 @@ namespace PolyFrac
     /** The relative increment of each coupling iteration of the step
      * (PoromechanicsModel: max|Δu|/max|u| + max|Δp|/max|p|), in order. */
     std::vector<double> coupling_increments;
+
+    /**
+     * What the last iterations of coupling_increments did, for the message
+     * of a failed coupling iteration: still contracting (the increment
+     * fell by at least half over the last ten iterations: more iterations
+     * may converge) or not (contact states that change back and forth do
+     * this: a shorter step may converge).
+     */
+    std::string
+    coupling_trend() const;
   };
 
   /**
