@@ -31,7 +31,8 @@ namespace PolyFrac
     else
       trend << "not contracting: " << over_the_last << " it stayed between "
             << *low << " and " << *high
-            << " (contact states that change back and forth do this), so a "
+            << " (contact states that change back and forth, or opening "
+               "fractures whose cubic law changes the flow, do this), so a "
                "shorter step may converge";
     return trend.str();
   }

@@ -65,8 +65,9 @@ namespace PolyFrac
      * What the last iterations of coupling_increments did, for the message
      * of a failed coupling iteration: still contracting (the increment
      * fell by at least half over the last ten iterations: more iterations
-     * may converge) or not (contact states that change back and forth do
-     * this: a shorter step may converge).
+     * may converge) or not (contact states that change back and forth,
+     * or opening fractures whose cubic law changes the flow, do this: a
+     * shorter step may converge).
      */
     std::string
     coupling_trend() const;
