@@ -15,8 +15,9 @@ namespace PolyFrac
   namespace
   {
     /** The format of the checkpoint files; raised when their content
-     * changes. */
-    constexpr unsigned int checkpoint_format = 1;
+     * changes (2: the time series they carry has the column
+     * injection_pressure). */
+    constexpr unsigned int checkpoint_format = 2;
 
     /** The signal recorded by the handler of StopSignals. */
     volatile std::sig_atomic_t received_signal = 0;

@@ -153,6 +153,7 @@ namespace PolyFrac
         report.mean_aperture          = aperture / area;
         report.mean_fracture_pressure = p_f / area;
       }
+    report.injection_pressure = flow.injection_pressure(time, pressure);
     return report;
   }
 

@@ -671,7 +671,7 @@ namespace PolyFrac
                 ExcMessage(equilibrium_failure(report.failure)));
     state          = u_k;
     initial_volume = volume_changes(state);
-    summarise_fractures(report);
+    summarise_state(report);
     out << "Step 0, equilibrium at t = 0: " << *report.coupling_iterations
         << " coupling iterations";
     print_contact_summary(report, out);
@@ -738,7 +738,7 @@ namespace PolyFrac
     report.coupling_iterations = 1;
     report.newton_iterations   = result.iterations;
     report.coupling_increments = result.increments;
-    summarise_fractures(report);
+    summarise_state(report);
     out << "Step 0, equilibrium at t = 0: monolithic ("
         << linear_solves<dim>(result) << ")";
     print_contact_summary(report, out);
@@ -817,7 +817,7 @@ namespace PolyFrac
     add_fluid_volumes(data, u_k, p_k);
     state    = u_k;
     pressure = p_k;
-    summarise_fractures(report);
+    summarise_state(report);
     out << "Step to t = " << t_new << ": " << *report.coupling_iterations
         << " coupling iterations";
     print_contact_summary(report, out);
@@ -828,8 +828,9 @@ namespace PolyFrac
 
   template <int dim>
   void
-  PoromechanicsModel<dim>::summarise_fractures(StepReport &report) const
+  PoromechanicsModel<dim>::summarise_state(StepReport &report) const
   {
+    report.injection_pressure = flow.injection_pressure(time, pressure);
     const auto &network  = *discretization.network;
     const auto &geometry = *discretization.geometry;
     if (network.n_fracture_faces() == 0)
@@ -892,7 +893,7 @@ namespace PolyFrac
     if (network.n_fracture_faces() == 0)
       return;
     StepReport fractures;
-    summarise_fractures(fractures);
+    summarise_state(fractures);
     double largest_opening = 0, largest_slip = 0;
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
@@ -1005,7 +1006,7 @@ namespace PolyFrac
     add_fluid_volumes(result.data, u_new, p_new);
     state    = u_new;
     pressure = p_new;
-    summarise_fractures(report);
+    summarise_state(report);
     out << "Step to t = " << t_new << ": monolithic ("
         << linear_solves<dim>(result) << ")";
     print_contact_summary(report, out);

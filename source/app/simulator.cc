@@ -326,7 +326,7 @@ namespace PolyFrac
         append_to_time_series(
           "step,time,time_step,cuts,coupling_iterations,"
           "newton_iterations,n_open,n_stick,n_slip,mean_aperture,"
-          "mean_fracture_pressure,open_area,slip_area,err_pressure,err_fracture_pressure,err_u,"
+          "mean_fracture_pressure,injection_pressure,open_area,slip_area,err_pressure,err_fracture_pressure,err_u,"
           "energy_residual,wall_seconds\n");
       }
   }
@@ -443,6 +443,7 @@ namespace PolyFrac
          std::vector<std::pair<std::string, std::optional<double>>>{
            {"mean_aperture", report.mean_aperture},
            {"mean_fracture_pressure", report.mean_fracture_pressure},
+           {"injection_pressure", report.injection_pressure},
            {"open_area", report.open_area},
            {"slip_area", report.slip_area},
            {"err_pressure", error("err_pressure")},
@@ -467,6 +468,7 @@ namespace PolyFrac
     write_cell(out, report.n_slip);
     write_cell(out, report.mean_aperture);
     write_cell(out, report.mean_fracture_pressure);
+    write_cell(out, report.injection_pressure);
     write_cell(out, report.open_area);
     write_cell(out, report.slip_area);
     write_cell(out, error("err_pressure"));

@@ -9,6 +9,8 @@ the row of time_series-level-0.csv and the fracture VTU of that step
   tangential_state 0 stick and 1 slip),
 - open_area, slip_area: the measure of the open and of the slipping faces,
 - mean_aperture, mean_fracture_pressure: the means weighted by the measure,
+- injection_pressure: the largest fracture pressure (the scene injects
+  through every fracture face, Fracture source = 2e-6),
 to a relative 1e-5 (the series prints six digits, the VTU holds Float32),
 and that some faces are open and some slip by the end (so that the
 comparison is not one of zeros).
@@ -71,6 +73,9 @@ for row in rows:
         mean = (length * cell_data(vtu, field)).sum() / \
             length.sum()
         check(where + ", " + column, mean, float(row[column]))
+    check(where + ", injection_pressure",
+          cell_data(vtu, "fracture_pressure").max(),
+          float(row["injection_pressure"]))
     print(f"{where}: {row['n_open']} open, {row['n_slip']} slipping faces, "
           f"open {float(row['open_area']):.4f} m, slipping "
           f"{float(row['slip_area']):.4f} m: as in the VTU file")

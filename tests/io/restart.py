@@ -143,10 +143,11 @@ taken = last_step(stopped)
 if nucleation:
     # The checkpoint must carry a slip history: faces slip at its step.
     with open(os.path.join(stopped, "time_series-level-0.csv")) as f:
-        last = f.read().splitlines()[-1].split(",")
-    if float(last[12]) <= 0:
+        rows = f.read().splitlines()
+    slip_area = rows[-1].split(",")[rows[0].split(",").index("slip_area")]
+    if float(slip_area) <= 0:
         fail("no face slips at the checkpoint's step (slip_area %s): the "
-             "restart would not carry a slip history" % last[12])
+             "restart would not carry a slip history" % slip_area)
 if not 3 <= taken < steps:
     fail("the run was stopped after %d of %d steps, not in the middle"
          % (taken, steps))

@@ -31,15 +31,16 @@ numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$workdir/serial.csv" \
     echo "The convergence tables differ (relative tolerance $tolerance)."; exit 1; }
 
 # The time series: step, time, time step, cuts, the contact states, the
-# mean aperture and fracture pressure, the errors (columns 1-4 and 7-14; the
-# iteration counts of iterative solves may differ, so may the energy
-# residual, which is round-off, and the wall time).
+# mean aperture, the mean fracture and the injection pressure, the open and
+# slipping areas, the pressure error (columns 1-4 and 7-15; the iteration
+# counts of iterative solves may differ, so may the energy residual, which
+# is round-off, and the wall time).
 for series in "$workdir"/serial/time_series*.csv; do
   [ -e "$series" ] || continue
   name=$(basename "$series")
   [ -s "$workdir/ranks/$name" ] || { echo "the $n-rank run wrote no $name"; exit 1; }
   for run in serial ranks; do
-    cut -d, -f1-4,7-14 "$workdir/$run/$name" > "$workdir/$run-$name"
+    cut -d, -f1-4,7-15 "$workdir/$run/$name" > "$workdir/$run-$name"
   done
   numdiff -q -s ', \t\n' -r "$tolerance" -a 1e-14 "$workdir/serial-$name" \
     "$workdir/ranks-$name" ||

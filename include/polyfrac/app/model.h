@@ -51,6 +51,9 @@ namespace PolyFrac
     std::optional<double> mean_aperture;
     /** Mean fracture pressure p_f (area-weighted). */
     std::optional<double> mean_fracture_pressure;
+    /** The largest pressure where fluid is injected (a positive source,
+     * in the matrix or a fracture), as the run summary prints it. */
+    std::optional<double> injection_pressure;
     /** Measure (area; length in 2D) of the open fracture faces. */
     std::optional<double> open_area;
     /** Measure (area; length in 2D) of the fracture faces in slip. */

@@ -284,10 +284,11 @@ namespace PolyFrac
            MechanicalState<dim> &u_k,
            Vector<double>       &p_k);
 
-    /** Adds the contact states, the mean aperture and the mean fracture
-     * pressure of the current state to @p report (with fractures). */
+    /** Adds the injection pressure and, with fractures, the contact
+     * states, the mean aperture and the mean fracture pressure of the
+     * current state to @p report. */
     void
-    summarise_fractures(StepReport &report) const;
+    summarise_state(StepReport &report) const;
 
     /** Ends the progress line of a step with its Newton iterations and
      * contact states (with fractures). */
