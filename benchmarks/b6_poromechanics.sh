@@ -10,7 +10,10 @@
 # fields of the last step are drawn by render_fracture_jumps.py into
 # benchmarks/b6-poro-47k-*.png (opening, slip, states, fracture pressure).
 # --coarse runs the 17k mesh of the mesh study (geo/b6-network-coarse.geo).
-# The 47k run takes about 15 minutes on 2 cores, the 127k one about an hour.
+# The schedule takes hours: 100-720 s per step at 47k on one thread, about
+# 10 min per step at 127k (benchmarks/B6.md, 2026-12-02); a run stopped by
+# SIGTERM or SIGINT goes on with polyfrac FILE --resume (a checkpoint after
+# every step).
 #
 # usage: benchmarks/b6_poromechanics.sh [--fine | --coarse] [path/to/polyfrac]
 set -euo pipefail
