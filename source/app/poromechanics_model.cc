@@ -831,8 +831,8 @@ namespace PolyFrac
   PoromechanicsModel<dim>::summarise_state(StepReport &report) const
   {
     report.injection_pressure = flow.injection_pressure(time, pressure);
-    const auto &network  = *discretization.network;
-    const auto &geometry = *discretization.geometry;
+    const auto &network       = *discretization.network;
+    const auto &geometry      = *discretization.geometry;
     if (network.n_fracture_faces() == 0)
       return;
     summarise_contact_states(geometry, network, state, report);
@@ -888,12 +888,12 @@ namespace PolyFrac
   {
     const auto &geometry = *discretization.geometry;
     const auto &network  = *discretization.network;
+    StepReport  summary;
+    summarise_state(summary);
     print_fluid_summary(
-      out, run_volumes, time, dim, flow.injection_pressure(time, pressure));
+      out, run_volumes, time, dim, summary.injection_pressure);
     if (network.n_fracture_faces() == 0)
       return;
-    StepReport fractures;
-    summarise_state(fractures);
     double largest_opening = 0, largest_slip = 0;
     for (unsigned int i = 0; i < network.n_fracture_faces(); ++i)
       {
@@ -905,12 +905,12 @@ namespace PolyFrac
         largest_slip = std::max(largest_slip, (jump + opening * n).norm());
       }
     const auto precision = out.precision(6);
-    out << "Fractures at t = " << time << ": " << *fractures.n_open << " of "
+    out << "Fractures at t = " << time << ": " << *summary.n_open << " of "
         << network.n_fracture_faces() << " faces open (measure "
-        << *fractures.open_area << "), " << *fractures.n_slip
-        << " slipping (measure " << *fractures.slip_area
-        << "); largest opening " << largest_opening << " m, largest slip "
-        << largest_slip << " m" << std::endl;
+        << *summary.open_area << "), " << *summary.n_slip
+        << " slipping (measure " << *summary.slip_area << "); largest opening "
+        << largest_opening << " m, largest slip " << largest_slip << " m"
+        << std::endl;
     out.precision(precision);
   }
 
