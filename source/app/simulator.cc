@@ -527,7 +527,6 @@ namespace PolyFrac
                  estimated_n_cells(prm),
                  n_ranks_on_this_node(communicator),
                  n_mpi_ranks(communicator));
-    check_distributable();
     const bool root = is_root_rank(communicator);
     if (root)
       {
@@ -627,23 +626,6 @@ namespace PolyFrac
         const std::string model_data = model_state.str();
         archive << stepping_data << output_data << model_data;
       }));
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::check_distributable() const
-  {
-    const unsigned int n_ranks = n_mpi_ranks(communicator);
-    if (n_ranks == 1)
-      return;
-    const std::string where = "In <" + prm.file_name + ">, run on " +
-                              std::to_string(n_ranks) + " MPI ranks: ";
-    AssertThrow(prm.mesh.refinement != MeshRefinement::adaptive,
-                ExcMessage(where + "Mesh/Refinement = adaptive runs on one "
-                                   "rank only so far. Run it without mpirun, "
-                                   "or use Mesh/Refinement = uniform."));
   }
 
 

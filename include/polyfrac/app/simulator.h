@@ -149,11 +149,6 @@ namespace PolyFrac
      */
     void
     report_checks(std::ostream &out) const;
-    /** Throws if the scene needs what runs on one rank only so far
-     * (adaptive refinement) and #communicator has more. */
-    void
-    check_distributable() const;
-
     /**
      * The parameters of @p discretization's level: #prm with the linear
      * solver of its size (LinearSolverParameters::method_for()), kept in
