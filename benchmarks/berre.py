@@ -3,8 +3,9 @@
 three-dimensional fractured porous media": case 1 (single fracture,
 prm/benchmarks/berre-case-1.prm: the steady head and a tracer), case 2
 (the regular network, conductive and blocking: berre-case-2.prm,
-berre-case-2-blocking.prm, the steady pressure) and case 4 (the field
-network, berre-case-4.prm, the steady pressure along two lines) against
+berre-case-2-blocking.prm, the steady pressure and a tracer) and case 4
+(the field network, berre-case-4.prm, the steady pressure along two lines)
+against
 the benchmark's participants at their middle refinement (about 10,000 cells
 in case 1, 4,000 in case 2; case 4 has one, about 260,000 cells), with the
 benchmark's own measures (benchmarks/data/berre/, derived by berre_band.py
@@ -23,7 +24,8 @@ from the benchmark's data):
   held in the bottom layer (the integral of porosity times concentration)
   and in the fracture (porosity times aperture times concentration,
   integrated over it) and the rate at which it leaves through the outflow
-  window, the same rule applied to those curves;
+  window, the same rule applied to those curves; in case 2 the mean
+  concentration over time in the benchmark's regions 1, 10 and 11;
 - for the pressure, the relative L2 error against the reference (USTUTT's
   MPFA at its finest refinement) on the band's 1,000 points, divided by
   the reference's range, the participants' computed the same way.
@@ -54,6 +56,11 @@ DATA = os.path.join(HERE, "data", "berre")
 # porosity of the bottom layer (region 3), and its fracture's porosity
 # times its aperture (prm/benchmarks/berre-case-1.prm).
 BOTTOM, FRACTURE = 0.25, 0.4 * 1e-2
+# Case 2's tracer: the mean concentration over time in the benchmark's
+# regions 1, 10 and 11 (the region integrals' rows of those ids).
+CASE_2_TRACER = {f"c-region-{r}-over-time": ("region", ("region", str(r)),
+                                             "concentration")
+                 for r in (1, 10, 11)}
 # Per case: its scene and its curves, each a quantity of benchmarks/data/
 # berre and where PolyFrac's curve comes from: a line probe and its column,
 # a row of the region integrals (kind, id), its column and the factor of
@@ -70,9 +77,11 @@ CASES = {
         "c-outflux-over-time": ("rate", ("boundary", "2"),
                                 "tracer_outflow")}),
     "case-2-conductive": ("berre-case-2.prm", {
-        "pressure": ("line", "diagonal", "pressure")}),
+        "pressure": ("line", "diagonal", "pressure"),
+        **CASE_2_TRACER}),
     "case-2-blocking": ("berre-case-2-blocking.prm", {
-        "pressure": ("line", "diagonal", "pressure")}),
+        "pressure": ("line", "diagonal", "pressure"),
+        **CASE_2_TRACER}),
     "case-4": ("berre-case-4.prm", {
         "line-0": ("line", "line_0", "pressure"),
         "line-1": ("line", "line_1", "pressure")}),

@@ -28,7 +28,11 @@ and the tracer's rate out through the outflow window
 ("c-outflux-over-time"; the files' columns 1, 2 and 3). DTU gave no concentrations. Case 2: the
 pressure along (0, 0, 0)-(1, 1, 1), conductive ("case-2-conductive") and
 blocking ("case-2-blocking", only the methods whose pressure may jump
-across a fracture). Case 4 (the field network, one mesh of about 260,000
+across a fracture), and over time the mean concentration in the regions 1,
+10 and 11 of the 22 that the fractures cut the cube into
+("case-2-conductive-c-region-R-over-time", "case-2-blocking-c-region-R-
+over-time": the 14 methods that gave it, all but DTU, as the paper's
+figure; the files dot_cond_0.csv and dot_cond_1.csv at refinement 1). Case 4 (the field network, one mesh of about 260,000
 cells per method, no reference): the pressure along (350, 100, -100)-(-500,
 1500, 500) ("case-4-line-0") and (-500, 100, -100)-(350, 1500, 500)
 ("case-4-line-1").
@@ -63,6 +67,11 @@ METHODS_2_BLOCKING = {"UiB": ["TPFA", "MPFA", "MVEM", "RT0"],
                       "UNICE_UNIGE": ["VAG_Disc", "HFV_Disc"],
                       "UNICAMP": ["Hybrid_Hdiv"],
                       "UNIL_USI": ["FE_AMR_AFC"]}
+# Case 2's tracer: the mean concentration over time in the regions the
+# paper plots (data/regular/scripts/pot.py; a method's dot_cond_C.csv holds
+# the time, then region 0 to 21's means; PorePy's case-2 script numbers the
+# regions, examples/papers/arXiv_1809_06926/case2/data.py, color()).
+CASE_2_REGIONS = (1, 10, 11)
 # Case 4: the 14 methods of compare_my_method.py (USTUTT's BOX and TPFA
 # and UNIL_USI gave files but are not among them).
 METHODS_4 = {"UiB": ["TPFA", "MPFA", "MVEM", "RT0"],
@@ -102,6 +111,12 @@ QUANTITIES = {
         folder="data/regular/results/", methods=METHODS_2_BLOCKING,
         curve="dol_cond_1_refinement_1.csv", sizes="results_cond_1.csv",
         columns=(0, 1), reference="USTUTT/MPFA/dol_cond_1_refinement_4.csv"),
+    **{f"case-2-{variant}-c-region-{region}-over-time": dict(
+        folder="data/regular/results/", methods=METHODS_2, skip=("DTU",),
+        curve=f"dot_cond_{cond}.csv", sizes=f"results_cond_{cond}.csv",
+        columns=(0, region + 1))
+       for cond, variant in enumerate(("conductive", "blocking"))
+       for region in CASE_2_REGIONS},
     "case-4-line-0": dict(
         folder="data/field/results/", methods=METHODS_4,
         curve="dol_line_0.csv", sizes="results.csv", sizes_row=0,
