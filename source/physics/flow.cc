@@ -845,6 +845,10 @@ namespace PolyFrac
             // it.
             TrilinosWrappers::SparseMatrix trilinos_matrix;
             trilinos_matrix.reinit(matrix, 0.);
+            // From the last step's pressure, with the constrained entries
+            // at 0 as in the condensed system's solution.
+            pressure = previous;
+            constraints.set_zero(pressure);
             iterations = solve_cg(trilinos_matrix, rhs, pressure);
           }
       }
@@ -895,7 +899,14 @@ namespace PolyFrac
                           rhs,
                           [&](auto &x, const auto &b) {
                             if (solver.method != SolverMethod::direct)
-                              iterations = solve_cg(matrix, b, x);
+                              {
+                                for (const auto k : dofs.locally_owned_dofs())
+                                  x(k) = constraints.is_constrained(k) ?
+                                           0. :
+                                           previous(k);
+                                x.compress(VectorOperation::insert);
+                                iterations = solve_cg(matrix, b, x);
+                              }
                             else
                               AssertThrow(solve_by_mumps(matrix, x, b),
                                           ExcMessage(singular_message));
@@ -912,10 +923,15 @@ namespace PolyFrac
                       const VectorType                     &rhs,
                       VectorType                           &pressure) const
   {
+    SolverControl control(solver.max_iterations,
+                          solver.tolerance * rhs.l2_norm());
+    VectorType    residual(rhs);
+    matrix.vmult(residual, pressure);
+    residual.sadd(-1., 1., rhs);
+    if (residual.l2_norm() <= control.tolerance())
+      return 0;
     TrilinosWrappers::PreconditionAMG amg;
     initialize_pressure_amg(amg, matrix);
-    SolverControl        control(solver.max_iterations,
-                          solver.tolerance * rhs.l2_norm());
     SolverCG<VectorType> cg(control);
     try
       {

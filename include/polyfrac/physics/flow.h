@@ -402,9 +402,12 @@ namespace PolyFrac
                       const AffineConstraints<double> &constraints,
                       Vector<double>                  &pressure) const;
 
-    /** CG + ML AMG on @p matrix; throws if Linear solver/Tolerance is not
-     * reached. VectorType: Vector<double> or TrilinosWrappers::MPI::Vector.
-     * Returns the iterations. */
+    /** CG + ML AMG on @p matrix from the initial guess @p pressure (the
+     * last step's pressure); throws if Linear solver/Tolerance (times the
+     * norm of @p rhs) is not reached. A guess that already meets it (a
+     * steady flow after its first step) is returned at once, without the
+     * AMG set-up. VectorType: Vector<double> or
+     * TrilinosWrappers::MPI::Vector. Returns the iterations. */
     template <typename VectorType>
     unsigned int
     solve_cg(const TrilinosWrappers::SparseMatrix &matrix,
