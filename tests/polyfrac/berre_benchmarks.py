@@ -52,10 +52,9 @@ reference and its participants' band along the benchmark's line
   96 against 99: region 1 leaves the band after t = 0.09 as UiB's TPFA,
   35, and MPFA, 38, do on the same cubes; regions 10 and 11 miss only
   while they hold round-off, 1e-14, and the band's top is 1e-17). The
-  programs' own
-  checks of the tracer (balance, discrete maximum principle) hold. 2b's
-  flow is steady: every step after the first takes no CG iteration (CG
-  starts from the last pressure).
+  programs' own checks of the tracer (balance, discrete maximum principle)
+  hold. 2b's flow is steady: every step after the first takes no CG
+  iteration (CG starts from the last pressure).
 
 usage: berre_benchmarks.py POLYFRAC SOURCE_DIR WORK_DIR
 Exits non-zero on the first failed check.
