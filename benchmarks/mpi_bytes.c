@@ -35,10 +35,13 @@ enum kind
   n_kinds
 };
 
-static const char *kind_names[n_kinds] = {"p2p", "allreduce", "allgather",
-                                          "bcast", "other"};
-static double bytes[n_kinds];
-static long   calls[n_kinds];
+static const char *kind_names[n_kinds] = {"p2p",
+                                          "allreduce",
+                                          "allgather",
+                                          "bcast",
+                                          "other"};
+static double      bytes[n_kinds];
+static long        calls[n_kinds];
 
 /* Adds @p count elements of @p type to the counters of @p k. */
 static void
@@ -230,12 +233,7 @@ MPI_Gatherv(const void  *sb,
 }
 
 int
-MPI_Scan(const void  *sb,
-         void        *rb,
-         int          n,
-         MPI_Datatype t,
-         MPI_Op       o,
-         MPI_Comm     c)
+MPI_Scan(const void *sb, void *rb, int n, MPI_Datatype t, MPI_Op o, MPI_Comm c)
 {
   count(other, n, t);
   return PMPI_Scan(sb, rb, n, t, o, c);
