@@ -165,6 +165,10 @@ namespace PolyFrac
   {
     print_fluid_summary(
       out, run_volumes, time, dim, flow.injection_pressure(time, pressure));
+    if (flow.n_factorisations() > 0)
+      out << "Pressure matrix factorisations: " << flow.n_factorisations()
+          << " (a step reuses the last one where its matrix is unchanged)"
+          << std::endl;
     if (transport)
       {
         const auto precision = out.precision(6);

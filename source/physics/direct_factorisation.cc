@@ -1,6 +1,8 @@
 #include <polyfrac/base/mpi.h>
 #include <polyfrac/physics/direct_factorisation.h>
 
+#include <algorithm>
+
 namespace PolyFrac
 {
   bool
@@ -56,5 +58,44 @@ namespace PolyFrac
       });
     else
       umfpack->vmult(x, b);
+  }
+
+
+
+  bool
+  ReusedFactorisation::factorise_if_changed(const SparseMatrix<double> &matrix)
+  {
+    if (!factorised.empty() &&
+        factorised_pattern == matrix.get_sparsity_pattern() &&
+        std::equal(matrix.begin(),
+                   matrix.end(),
+                   factorised.begin(),
+                   [](const auto &a, const auto &b) {
+                     return a.value() == b.value();
+                   }))
+      return true;
+    factorised.clear();
+    ++factorisations;
+    try
+      {
+        umfpack.initialize(matrix);
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+    factorised_pattern.copy_from(matrix.get_sparsity_pattern());
+    factorised.reinit(factorised_pattern);
+    factorised.copy_from(matrix);
+    return true;
+  }
+
+
+
+  void
+  ReusedFactorisation::solve(Vector<double> &x, const Vector<double> &b) const
+  {
+    Assert(!factorised.empty(), ExcInternalError());
+    umfpack.vmult(x, b);
   }
 } // namespace PolyFrac

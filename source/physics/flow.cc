@@ -827,16 +827,9 @@ namespace PolyFrac
         assemble(data, previous, constraints, matrix, rhs);
         if (solver.method == SolverMethod::direct)
           {
-            SparseDirectUMFPACK direct;
-            try
-              {
-                direct.initialize(matrix);
-              }
-            catch (const std::exception &)
-              {
-                AssertThrow(false, ExcMessage(singular_message));
-              }
-            direct.vmult(pressure, rhs);
+            AssertThrow(direct.factorise_if_changed(matrix),
+                        ExcMessage(singular_message));
+            direct.solve(pressure, rhs);
           }
         else
           {

@@ -16,6 +16,7 @@
 #include <polyfrac/fractures/fracture_network.h>
 #include <polyfrac/mesh/mesh_geometry.h>
 #include <polyfrac/physics/aperture_law.h>
+#include <polyfrac/physics/direct_factorisation.h>
 #include <polyfrac/physics/flow_parameters.h>
 
 #include <memory>
@@ -172,11 +173,20 @@ namespace PolyFrac
 
     /** One implicit Euler step: the pressures @p pressure at t^n from
      * those at t^{n−1}, @p previous. Returns the CG iterations (0 with
-     * UMFPACK). */
+     * the direct solver, which factorises the matrix only when it differs
+     * from the last step's: n_factorisations()). */
     unsigned int
     solve_step(const FlowStepData   &data,
                const Vector<double> &previous,
                Vector<double>       &pressure) const;
+
+    /** The factorisations solve_step() made on one rank with Linear
+     * solver/Method = direct. */
+    unsigned int
+    n_factorisations() const
+    {
+      return direct.n_factorisations();
+    }
 
     /** The largest mass balance residual of the cell and fracture face
      * equations, each relative to the largest of its terms and of the sizes
@@ -413,6 +423,10 @@ namespace PolyFrac
     solve_cg(const TrilinosWrappers::SparseMatrix &matrix,
              const VectorType                     &rhs,
              VectorType                           &pressure) const;
+
+    /** The pressure matrix's factorisation of Linear solver/Method =
+     * direct on one rank, kept while the matrix does not change. */
+    mutable ReusedFactorisation direct;
 
     /** Global unknowns of cell @p c: p_K, then its face unknowns. */
     std::vector<types::global_dof_index>
