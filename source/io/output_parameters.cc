@@ -26,8 +26,9 @@ namespace PolyFrac
       "fast",
       Patterns::Selection(selection_pattern<VtuCompression>()),
       "zlib compression of the VTU data: fast (the default), best "
-      "(3-10 % smaller files, written up to 7 times slower), none. deal.II 9.4 writes the data "
-      "base64-encoded in every case: there is no ASCII VTU.");
+      "(3-10 % smaller files, written up to 7 times slower), none. "
+      "deal.II 9.4 writes the data base64-encoded in every case: there "
+      "is no ASCII VTU.");
     prm.declare_entry("Print timings",
                       "true",
                       Patterns::Bool(),

@@ -65,16 +65,17 @@ namespace PolyFrac
   bool
   ReusedFactorisation::factorise_if_changed(const SparseMatrix<double> &matrix)
   {
-    if (!factorised.empty() &&
+    if (!factorised_values.empty() &&
         factorised_pattern == matrix.get_sparsity_pattern() &&
         std::equal(matrix.begin(),
                    matrix.end(),
-                   factorised.begin(),
-                   [](const auto &a, const auto &b) {
-                     return a.value() == b.value();
+                   factorised_values.begin(),
+                   factorised_values.end(),
+                   [](const auto &entry, const double value) {
+                     return entry.value() == value;
                    }))
       return true;
-    factorised.clear();
+    factorised_values.clear();
     ++factorisations;
     try
       {
@@ -85,8 +86,8 @@ namespace PolyFrac
         return false;
       }
     factorised_pattern.copy_from(matrix.get_sparsity_pattern());
-    factorised.reinit(factorised_pattern);
-    factorised.copy_from(matrix);
+    for (const auto &entry : matrix)
+      factorised_values.push_back(entry.value());
     return true;
   }
 
@@ -95,7 +96,7 @@ namespace PolyFrac
   void
   ReusedFactorisation::solve(Vector<double> &x, const Vector<double> &b) const
   {
-    Assert(!factorised.empty(), ExcInternalError());
+    Assert(!factorised_values.empty(), ExcInternalError());
     umfpack.vmult(x, b);
   }
 } // namespace PolyFrac

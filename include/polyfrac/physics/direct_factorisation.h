@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <vector>
 
 namespace PolyFrac
 {
@@ -84,11 +85,11 @@ namespace PolyFrac
 
   private:
     SparseDirectUMFPACK umfpack;
-    /** A copy of the last factorised matrix and its pattern (empty if
-     * none, or if the last one was singular). */
-    SparsityPattern      factorised_pattern;
-    SparseMatrix<double> factorised;
-    unsigned int         factorisations = 0;
+    /** The pattern of the last factorised matrix and its values, row by
+     * row (empty if none, or if the last one was singular). */
+    SparsityPattern     factorised_pattern;
+    std::vector<double> factorised_values;
+    unsigned int        factorisations = 0;
   };
 } // namespace PolyFrac
 
