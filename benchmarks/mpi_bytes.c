@@ -20,10 +20,20 @@
  * the network, an all-gather of B bytes per rank about (P - 1) B.
  * Open MPI's own monitoring component (pml_monitoring_enable) prints
  * nothing for polyfrac's runs (it does for a bare MPI program), hence this.
+ *
+ * With the environment variable MPI_BYTES_SITES set to a path, each rank R
+ * also writes PATH.R: per call site, "B N kind | f | g" with f and g the
+ * innermost two functions of libpolyfrac on the call's stack (mangled
+ * names: pipe the file through c++filt), largest B first unsorted; what
+ * moves the bytes, e.g. a whole-vector import after a Krylov solve.
  */
+#define _GNU_SOURCE
+#include <dlfcn.h>
+#include <execinfo.h>
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 enum kind
 {
@@ -43,6 +53,54 @@ static const char *kind_names[n_kinds] = {"p2p",
 static double      bytes[n_kinds];
 static long        calls[n_kinds];
 
+/* The call sites of MPI_BYTES_SITES: their keys, bytes and calls. */
+enum
+{
+  max_sites = 1024,
+  key_length = 600
+};
+static char   site_keys[max_sites][key_length];
+static double site_bytes[max_sites];
+static long   site_calls[max_sites];
+static int    n_sites = 0;
+
+/* Adds @p b bytes of kind @p k to the call site of the caller's caller. */
+static void
+count_site(const enum kind k, const double b)
+{
+  void     *stack[48];
+  const int depth = backtrace(stack, 48);
+  char      key[key_length];
+  int       length = snprintf(key, key_length, "%s", kind_names[k]);
+  for (int i = 2, found = 0; i < depth && found < 2 && length < 500; ++i)
+    {
+      Dl_info info;
+      if (dladdr(stack[i], &info) && info.dli_fname && info.dli_sname &&
+          strstr(info.dli_fname, "libpolyfrac"))
+        {
+          length += snprintf(key + length,
+                             key_length - length,
+                             " | %.240s",
+                             info.dli_sname);
+          ++found;
+        }
+    }
+  for (int s = 0; s < n_sites; ++s)
+    if (strcmp(site_keys[s], key) == 0)
+      {
+        site_bytes[s] += b;
+        ++site_calls[s];
+        return;
+      }
+  if (n_sites < max_sites)
+    {
+      strcpy(site_keys[n_sites], key);
+      site_bytes[n_sites] = b;
+      site_calls[n_sites] = 1;
+      ++n_sites;
+    }
+}
+
 /* Adds @p count elements of @p type to the counters of @p k. */
 static void
 count(const enum kind k, const int n, const MPI_Datatype type)
@@ -51,6 +109,8 @@ count(const enum kind k, const int n, const MPI_Datatype type)
   PMPI_Type_size(type, &size);
   bytes[k] += (double)n * size;
   ++calls[k];
+  if (getenv("MPI_BYTES_SITES"))
+    count_site(k, (double)n * size);
 }
 
 int
@@ -266,6 +326,20 @@ MPI_Finalize(void)
       fprintf(file, "\n");
       if (file != stderr)
         fclose(file);
+    }
+  if (getenv("MPI_BYTES_SITES"))
+    {
+      char path[4096];
+      snprintf(path, sizeof path, "%s.%d", getenv("MPI_BYTES_SITES"), rank);
+      FILE *sites = fopen(path, "w");
+      for (int s = 0; sites && s < n_sites; ++s)
+        fprintf(sites,
+                "%.0f %ld %s\n",
+                site_bytes[s],
+                site_calls[s],
+                site_keys[s]);
+      if (sites)
+        fclose(sites);
     }
   return PMPI_Finalize();
 }

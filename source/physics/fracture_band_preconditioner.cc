@@ -1,8 +1,10 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector_memory.h>
 
+#include <polyfrac/base/mpi.h>
 #include <polyfrac/physics/fracture_band_preconditioner.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -16,27 +18,69 @@ namespace PolyFrac
 {
   namespace
   {
-    /** All ranks' entries of @p local, concatenated in rank order. */
+    /** The position of the dof @p global in @p band, or −1. */
+    int
+    band_position(const std::vector<types::global_dof_index> &band,
+                  const int                                   global)
+    {
+      const auto p = std::lower_bound(band.begin(), band.end(), global);
+      return (p != band.end() && static_cast<int>(*p) == global) ?
+               static_cast<int>(p - band.begin()) :
+               -1;
+    }
+
+    /** The positions in @p band of the rows of @p K on this rank and, with
+     * @p and_columns, of its columns. */
+    IndexSet
+    band_positions(const Epetra_CrsMatrix                     &K,
+                   const std::vector<types::global_dof_index> &band,
+                   const bool                                  and_columns)
+    {
+      IndexSet positions(band.size());
+      for (int i = 0; i < K.NumMyRows(); ++i)
+        if (const int p = band_position(band, K.RowMap().GID(i)); p >= 0)
+          positions.add_index(p);
+      if (and_columns)
+        for (int j = 0; j < K.NumMyCols(); ++j)
+          if (const int p = band_position(band, K.ColMap().GID(j)); p >= 0)
+            positions.add_index(p);
+      positions.compress();
+      return positions;
+    }
+
+    /** All @p n positions on rank 0 of @p communicator, none elsewhere. */
+    IndexSet
+    on_root(const unsigned int n, const MPI_Comm communicator)
+    {
+      IndexSet positions(n);
+      if (is_root_rank(communicator))
+        positions.add_range(0, n);
+      return positions;
+    }
+
+    /** On rank 0 of @p communicator, all ranks' entries of @p local,
+     * concatenated in rank order; elsewhere nothing. */
     template <typename T>
     std::vector<T>
-    gather_on_all_ranks(const std::vector<T> &local,
-                        const MPI_Comm        communicator)
+    gather_on_root(const std::vector<T> &local, const MPI_Comm communicator)
     {
-      const auto sizes =
-        Utilities::MPI::all_gather(communicator,
-                                   static_cast<int>(local.size() * sizeof(T)));
+      const int size = local.size() * sizeof(T);
+      if (n_mpi_ranks(communicator) == 1)
+        return local;
+      const auto       sizes = Utilities::MPI::gather(communicator, size);
       std::vector<int> offsets(sizes.size() + 1, 0);
       for (unsigned int r = 0; r < sizes.size(); ++r)
         offsets[r + 1] = offsets[r] + sizes[r];
       std::vector<T> all(offsets.back() / sizeof(T));
-      MPI_Allgatherv(local.data(),
-                     sizes[Utilities::MPI::this_mpi_process(communicator)],
-                     MPI_BYTE,
-                     all.data(),
-                     sizes.data(),
-                     offsets.data(),
-                     MPI_BYTE,
-                     communicator);
+      MPI_Gatherv(local.data(),
+                  size,
+                  MPI_BYTE,
+                  all.data(),
+                  sizes.data(),
+                  offsets.data(),
+                  MPI_BYTE,
+                  0,
+                  communicator);
       return all;
     }
   } // namespace
@@ -48,25 +92,32 @@ namespace PolyFrac
     const std::vector<types::global_dof_index> &band,
     const TrilinosWrappers::PreconditionAMG    &amg)
     : amg(&amg)
-    , communicator(matrix.get_mpi_communicator())
-    , band_vector(band.size())
-    , first_solution(band.size())
+    , band_is_empty(band.empty())
+    , owned_map(band_positions(matrix.trilinos_matrix(), band, false)
+                  .make_trilinos_map(matrix.get_mpi_communicator(), false))
+    , relevant_map(band_positions(matrix.trilinos_matrix(), band, true)
+                     .make_trilinos_map(matrix.get_mpi_communicator(), true))
+    , root_map(on_root(band.size(), matrix.get_mpi_communicator())
+                 .make_trilinos_map(matrix.get_mpi_communicator(), false))
+    , halo(relevant_map, owned_map)
+    , gather(root_map, owned_map)
+    , band_rhs(owned_map)
+    , band_solution(owned_map)
+    , first_solution(owned_map)
+    , on_columns(relevant_map)
+    , root_rhs(root_map)
   {
     AssertThrow(std::is_sorted(band.begin(), band.end()), ExcInternalError());
-    const Epetra_CrsMatrix &K             = matrix.trilinos_matrix();
-    const Epetra_Map       &rows          = K.RowMap();
-    const Epetra_Map       &columns       = K.ColMap();
-    const auto              band_position = [&](const int global) {
-      const auto p = std::lower_bound(band.begin(), band.end(), global);
-      return (p != band.end() && static_cast<int>(*p) == global) ?
-                            static_cast<int>(p - band.begin()) :
-                            -1;
-    };
+    const Epetra_CrsMatrix &K    = matrix.trilinos_matrix();
+    const Epetra_Map       &rows = K.RowMap();
 
-    // Per column of K: its position in the band, or −1.
-    std::vector<int> column_position(K.NumMyCols());
+    // Per column of K: its index in relevant_map, or −1 (not in the band).
+    std::vector<int> column_index(K.NumMyCols());
     for (int j = 0; j < K.NumMyCols(); ++j)
-      column_position[j] = band_position(columns.GID(j));
+      {
+        const int p     = band_position(band, K.ColMap().GID(j));
+        column_index[j] = p < 0 ? -1 : relevant_map.LID(p);
+      }
 
     // C = K[own rows, S], and this rank's entries of the upper triangle of
     // K_SS (K is symmetric: band row p is band column p).
@@ -78,29 +129,38 @@ namespace PolyFrac
         double *values;
         int    *indices;
         K.ExtractMyRowView(i, length, values, indices);
-        const int p = band_position(rows.GID(i));
+        const int p = band_position(band, rows.GID(i));
         if (p >= 0)
           owned_band.emplace_back(i, p);
         std::vector<std::pair<unsigned int, double>> entries;
         for (int e = 0; e < length; ++e)
           {
-            const int q = column_position[indices[e]];
+            const int q = column_index[indices[e]];
             if (q < 0)
               continue;
             entries.emplace_back(q, values[e]);
-            if (p >= 0 && q <= p)
-              block_entries.emplace_back(q, p, values[e]);
+            if (const int column = relevant_map.GID(q); p >= 0 && column <= p)
+              block_entries.emplace_back(column, p, values[e]);
           }
         if (!entries.empty())
           {
+            std::sort(entries.begin(), entries.end());
             coupled_rows.push_back(i);
             coupling_rows.push_back(std::move(entries));
           }
       }
-    for (auto &row : coupling_rows)
-      std::sort(row.begin(), row.end());
+    AssertThrow(static_cast<int>(owned_band.size()) ==
+                    owned_map.NumMyElements() &&
+                  std::all_of(owned_band.begin(),
+                              owned_band.end(),
+                              [&](const auto &row) {
+                                return owned_map.LID(row.second) ==
+                                       static_cast<int>(&row -
+                                                        owned_band.data());
+                              }),
+                ExcInternalError());
     coupling_pattern.copy_from(coupled_rows.size(),
-                               band.size(),
+                               relevant_map.NumMyElements(),
                                coupling_rows.begin(),
                                coupling_rows.end());
     coupling.reinit(coupling_pattern);
@@ -108,9 +168,9 @@ namespace PolyFrac
     coupling_rows = {};
 
     cholmod_start(&common);
-    if (band.empty())
-      return;
-    factorize_block(gather_on_all_ranks(block_entries, communicator));
+    if (!band_is_empty)
+      factorize_block(
+        gather_on_root(block_entries, matrix.get_mpi_communicator()));
   }
 
 
@@ -119,13 +179,15 @@ namespace PolyFrac
   FractureBandPreconditioner::factorize_block(
     std::vector<std::tuple<int, int, double>> entries)
   {
+    const unsigned int n = root_map.NumMyElements();
+    if (n == 0)
+      return;
     // By columns, then rows: CHOLMOD's packed, sorted upper triangle.
     std::sort(entries.begin(), entries.end(), [](const auto &a, const auto &b) {
       return std::tie(std::get<1>(a), std::get<0>(a)) <
              std::tie(std::get<1>(b), std::get<0>(b));
     });
-    const unsigned int n     = band_vector.size();
-    cholmod_sparse    *block = cholmod_allocate_sparse(
+    cholmod_sparse *block = cholmod_allocate_sparse(
       n, n, entries.size(), true, true, 1, CHOLMOD_REAL, &common);
     int    *starts  = static_cast<int *>(block->p);
     int    *indices = static_cast<int *>(block->i);
@@ -150,12 +212,13 @@ namespace PolyFrac
     const bool positive_definite =
       factor != nullptr && common.status == CHOLMOD_OK;
     cholmod_free_sparse(&block, &common);
-    AssertThrow(positive_definite,
-                ExcMessage("The fracture band of a condensed contact step is "
-                           "not positive definite (CHOLMOD status " +
-                           std::to_string(common.status) +
-                           "): the reduced operator is not symmetric positive "
-                           "definite. Use Linear solver/Method = direct."));
+    if (!positive_definite)
+      raise_rank_local_error(
+        "The fracture band of a condensed contact step is not positive "
+        "definite (CHOLMOD status " +
+        std::to_string(common.status) +
+        "): the reduced operator is not symmetric positive definite. Use "
+        "Linear solver/Method = direct.");
     rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
   }
 
@@ -185,20 +248,27 @@ namespace PolyFrac
   void
   FractureBandPreconditioner::solve_on_band() const
   {
-    const ArrayView<double> values(band_vector.begin(), band_vector.size());
-    Utilities::MPI::sum(ArrayView<const double>(values), communicator, values);
-    std::copy(band_vector.begin(),
-              band_vector.end(),
-              static_cast<double *>(rhs->x));
-    cholmod_solve2(CHOLMOD_A,
-                   factor,
-                   rhs,
-                   nullptr,
-                   &solution,
-                   nullptr,
-                   &work_y,
-                   &work_e,
-                   &common);
+    root_rhs.Import(band_rhs, gather, Insert);
+    if (factor != nullptr)
+      {
+        std::copy(root_rhs.Values(),
+                  root_rhs.Values() + root_rhs.MyLength(),
+                  static_cast<double *>(rhs->x));
+        cholmod_solve2(CHOLMOD_A,
+                       factor,
+                       rhs,
+                       nullptr,
+                       &solution,
+                       nullptr,
+                       &work_y,
+                       &work_e,
+                       &common);
+        std::copy(static_cast<const double *>(solution->x),
+                  static_cast<const double *>(solution->x) +
+                    root_rhs.MyLength(),
+                  root_rhs.Values());
+      }
+    band_solution.Export(root_rhs, gather, Insert);
   }
 
 
@@ -208,22 +278,19 @@ namespace PolyFrac
   FractureBandPreconditioner::vmult(VectorType       &dst,
                                     const VectorType &src) const
   {
-    if (band_vector.size() == 0)
+    if (band_is_empty)
       {
         amg->vmult(dst, src);
         return;
       }
-    // x_S = K_SS^{-1} b_S; r = b − K x_S = b − C x_S.
-    band_vector     = 0;
+    // x_S = K_SS^{-1} b_S; r = b − K x_S = b − C x_S, with x_S on the band
+    // columns of this rank's rows.
     const double *b = src.begin();
-    for (const auto &[i, p] : owned_band)
-      band_vector(p) = b[i];
+    for (unsigned int k = 0; k < owned_band.size(); ++k)
+      band_rhs[k] = b[owned_band[k].first];
     solve_on_band();
-    std::copy(static_cast<const double *>(solution->x),
-              static_cast<const double *>(solution->x) + band_vector.size(),
-              first_solution.begin());
-    // A vector of src's size from deal.II's pool, not allocated anew at
-    // every application.
+    first_solution = band_solution;
+    on_columns.Import(band_solution, halo, Insert);
     GrowingVectorMemory<VectorType>            memory;
     typename VectorMemory<VectorType>::Pointer residual(memory);
     residual->reinit(src, true);
@@ -231,22 +298,24 @@ namespace PolyFrac
     double *r = residual->begin();
     for (unsigned int k = 0; k < coupled_rows.size(); ++k)
       for (auto e = coupling.begin(k); e != coupling.end(k); ++e)
-        r[coupled_rows[k]] -= e->value() * first_solution(e->column());
+        r[coupled_rows[k]] -= e->value() * on_columns[e->column()];
 
     // y = M r, then the band again on the new residual: (r − K y)_S =
-    // r_S − C^T y, summed over the ranks.
+    // r_S − C^T y, each rank's C^T y added to the band rows' owners.
     amg->vmult(dst, *residual);
-    double *x   = dst.begin();
-    band_vector = 0;
-    for (const auto &[i, p] : owned_band)
-      band_vector(p) = r[i];
+    const double *y = dst.begin();
+    on_columns.PutScalar(0.);
     for (unsigned int k = 0; k < coupled_rows.size(); ++k)
       for (auto e = coupling.begin(k); e != coupling.end(k); ++e)
-        band_vector(e->column()) -= e->value() * x[coupled_rows[k]];
+        on_columns[e->column()] += e->value() * y[coupled_rows[k]];
+    band_solution.PutScalar(0.);
+    band_solution.Export(on_columns, halo, Add);
+    for (unsigned int k = 0; k < owned_band.size(); ++k)
+      band_rhs[k] = r[owned_band[k].first] - band_solution[k];
     solve_on_band();
-    const double *second = static_cast<const double *>(solution->x);
-    for (const auto &[i, p] : owned_band)
-      x[i] += first_solution(p) + second[p];
+    double *x = dst.begin();
+    for (unsigned int k = 0; k < owned_band.size(); ++k)
+      x[owned_band[k].first] += first_solution[k] + band_solution[k];
   }
 
 

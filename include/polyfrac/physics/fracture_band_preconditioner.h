@@ -1,7 +1,6 @@
 #ifndef polyfrac_physics_fracture_band_preconditioner_h
 #define polyfrac_physics_fracture_band_preconditioner_h
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -9,6 +8,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Epetra_Import.h>
+#include <Epetra_Map.h>
+#include <Epetra_Vector.h>
 #include <cholmod.h>
 
 #include <tuple>
@@ -36,10 +38,17 @@ namespace PolyFrac
    * (benchmarks/README.md, "The fracture band"). B K x = x for every x
    * supported on the band, whatever M.
    *
-   * Distributed, K_SS is gathered and factorised on every rank, and each
-   * band solve sums its right-hand side over the ranks: the band solve
-   * stays exact (split among the ranks' rows, it would cut the fracture
-   * modes it is there for).
+   * Distributed, K_SS is factorised on rank 0 alone: each rank sends it
+   * the entries of its own band rows once per factorisation, and each band
+   * solve gathers the right-hand side there and sends each rank its rows
+   * of the solution, while x_S and C^T y (below) move between the ranks by
+   * the band's halos. No other rank holds the band's matrix or its factor.
+   * The band solve stays exact. Split among the ranks' rows (block
+   * Jacobi), it would cut the fracture modes it is there for: Krylov
+   * iterations 187 -> 244 on 2 ranks and 196 -> 483 on 4, B2-3D Tresca
+   * at 30^3. Factorised by MUMPS on all ranks together, it took 7 to 9
+   * times longer to factorise (benchmarks/README.md, "The fracture band on
+   * several ranks").
    */
   class FractureBandPreconditioner
   {
@@ -79,47 +88,61 @@ namespace PolyFrac
     /** M. */
     const TrilinosWrappers::PreconditionAMG *amg;
 
-    /** The communicator of K. */
-    MPI_Comm communicator;
+    /** Whether the band, all ranks' rows of it, is empty: then B = M. */
+    bool band_is_empty;
+
+    /** This rank's rows of the band: (index among this rank's rows of K,
+     * position in the band), in order. */
+    std::vector<std::pair<int, int>> owned_band;
 
     /**
-     * This rank's rows of the band: (index among this rank's rows,
-     * position in the band).
+     * The band's positions: this rank's rows (#owned_band), with them the
+     * band columns its rows of K couple to, and on rank 0 all of them (on
+     * the others none).
      */
-    std::vector<std::pair<int, int>> owned_band;
+    Epetra_Map owned_map, relevant_map, root_map;
+
+    /** The band's halo (#relevant_map from #owned_map) and its gather on
+     * rank 0 (#root_map from #owned_map; backwards, the scatter). */
+    Epetra_Import halo, gather;
 
     /**
      * C = K[own rows, S]: the rows of this rank that couple to the band
      * (indices among this rank's rows), and their entries in the band's
-     * columns. K_S = C^T (summed over the ranks), since K is symmetric.
+     * columns (indices in #relevant_map). K_S = C^T, summed over the ranks,
+     * since K is symmetric.
      */
     std::vector<int>     coupled_rows;
     SparsityPattern      coupling_pattern;
     SparseMatrix<double> coupling;
 
     /**
-     * The Cholesky factorisation of K_SS (the whole band, on every rank)
-     * by CHOLMOD: SuiteSparse, which deal.II links; deal.II 9.4 wraps
-     * UMFPACK only, whose LU costs more and refines every solve
-     * iteratively. With its workspace.
+     * The Cholesky factorisation of K_SS (the whole band, on rank 0) by
+     * CHOLMOD: SuiteSparse, which deal.II links; deal.II 9.4 wraps UMFPACK
+     * only, whose LU costs more and refines every solve iteratively. With
+     * its workspace.
      */
     mutable cholmod_common common;
     cholmod_factor        *factor = nullptr;
     mutable cholmod_dense *rhs = nullptr, *solution = nullptr,
                           *work_y = nullptr, *work_e = nullptr;
 
-    /** A band-sized vector: this rank's part, then the sum over ranks. */
-    mutable Vector<double> band_vector;
+    /** On this rank's band rows: a band solve's right-hand side and
+     * solution, and the first solve of vmult(). */
+    mutable Epetra_Vector band_rhs, band_solution, first_solution;
 
-    /** The first band solve of vmult(), x_S = K_SS^{-1} b_S. */
-    mutable Vector<double> first_solution;
+    /** On the band columns: x_S, or C^T y to be added to the owners. */
+    mutable Epetra_Vector on_columns;
 
-    /** Factorises K_SS from its upper triangle @p entries (row, column,
-     * value), all ranks' together. */
+    /** On rank 0, the whole band: a solve's right-hand side. */
+    mutable Epetra_Vector root_rhs;
+
+    /** Factorises K_SS on rank 0 from the upper triangle @p entries (row,
+     * column, value) that each rank has of its band rows. Collective. */
     void
     factorize_block(std::vector<std::tuple<int, int, double>> entries);
 
-    /** Sums #band_vector over the ranks, then solution = K_SS^{-1} of it. */
+    /** #band_solution = K_SS^{-1} #band_rhs. Collective. */
     void
     solve_on_band() const;
   };
