@@ -184,22 +184,27 @@ namespace PolyFrac
                std::make_unique<FractureNetwork<dim>>(fractures, mesh_geometry);
     };
 
+    // Per face of the mesh: whether it is a fracture face of @p cut.
+    const auto fracture_faces = [this](const FractureNetwork<dim> &cut) {
+      std::vector<bool> flags(mesh->n_faces(), false);
+      for (const auto &ff : cut.fracture_faces)
+        flags[ff.face] = true;
+      return flags;
+    };
     if (prm.mesh.cells_per_polytope > 1)
       {
         const MeshGeometry<dim> fine_geometry(*mesh);
-        const auto              fine_network = make_network(fine_geometry);
-        std::vector<bool>       fracture_face(mesh->n_faces(), false);
-        for (const auto &ff : fine_network->fracture_faces)
-          fracture_face[ff.face] = true;
-        mesh = std::make_unique<PolytopalMesh<dim>>(
-          MeshBuilder::agglomerate(prm.mesh, fracture_face, *mesh));
+        mesh = std::make_unique<PolytopalMesh<dim>>(MeshBuilder::agglomerate(
+          prm.mesh, fracture_faces(*make_network(fine_geometry)), *mesh));
       }
 
     geometry = std::make_unique<MeshGeometry<dim>>(*mesh);
     network  = make_network(*geometry);
     dofs = std::make_unique<DoFMap<dim>>(*mesh, *network, prm.bubble_placement);
     if (const unsigned int n_ranks = n_mpi_ranks(communicator); n_ranks > 1)
-      dofs->distribute_among_ranks(communicator, mesh->partition(n_ranks));
+      dofs->distribute_among_ranks(communicator,
+                                   mesh->partition(n_ranks,
+                                                   fracture_faces(*network)));
   }
 
 

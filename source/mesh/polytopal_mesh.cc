@@ -300,21 +300,55 @@ namespace PolyFrac
 
   template <int dim>
   std::vector<unsigned int>
-  PolytopalMesh<dim>::partition(const unsigned int n_parts) const
+  PolytopalMesh<dim>::partition(const unsigned int       n_parts,
+                                const std::vector<bool> &joined_face) const
   {
     std::vector<unsigned int> part(n_cells(), 0);
     if (n_parts == 1)
       return part;
-    DynamicSparsityPattern graph(n_cells());
+    // The groups of polytopes that joined faces connect (union-find).
+    std::vector<unsigned int> root(n_cells());
+    std::iota(root.begin(), root.end(), 0);
+    const auto find = [&root](unsigned int c) {
+      while (root[c] != c)
+        c = root[c] = root[root[c]];
+      return c;
+    };
+    for (unsigned int f = 0; f < joined_face.size(); ++f)
+      if (joined_face[f] && !faces[f].at_boundary())
+        root[find(faces[f].cells[0])] = find(faces[f].cells[1]);
+    std::vector<unsigned int> group(n_cells(), numbers::invalid_unsigned_int);
+    std::vector<unsigned int> weights;
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      {
+        unsigned int &g = group[find(c)];
+        if (g == numbers::invalid_unsigned_int)
+          {
+            g = weights.size();
+            weights.push_back(0);
+          }
+        ++weights[g];
+      }
+
+    // METIS on the groups' face graph, each weighted by its polytopes.
+    DynamicSparsityPattern graph(weights.size());
     for (const Face &face : faces)
       if (!face.at_boundary())
         {
-          graph.add(face.cells[0], face.cells[1]);
-          graph.add(face.cells[1], face.cells[0]);
+          const unsigned int a = group[find(face.cells[0])];
+          const unsigned int b = group[find(face.cells[1])];
+          if (a != b)
+            {
+              graph.add(a, b);
+              graph.add(b, a);
+            }
         }
     SparsityPattern sparsity;
     sparsity.copy_from(graph);
-    SparsityTools::partition(sparsity, n_parts, part);
+    std::vector<unsigned int> group_part(weights.size());
+    SparsityTools::partition(sparsity, weights, n_parts, group_part);
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      part[c] = group_part[group[find(c)]];
     return part;
   }
 

@@ -118,12 +118,15 @@ namespace PolyFrac
 
     /**
      * The polytopes split into @p n_parts parts of about equal size by
-     * METIS on their face graph (fracture faces included), one part per MPI
-     * rank (DoFMap::distribute_among_ranks()): an agglomerate stays whole,
-     * and the same mesh gives the same parts on every rank.
+     * METIS on their face graph, one part per MPI rank
+     * (DoFMap::distribute_among_ranks()): an agglomerate stays whole, so do
+     * the two polytopes of each face flagged in @p joined_face (fracture
+     * faces: a face's condensation and its contact rows then add to one
+     * rank's rows), and the same mesh gives the same parts on every rank.
      */
     std::vector<unsigned int>
-    partition(const unsigned int n_parts) const;
+    partition(const unsigned int       n_parts,
+              const std::vector<bool> &joined_face = {}) const;
 
     /** Number of polytopes. */
     unsigned int
