@@ -8,7 +8,6 @@
 #include <polyfrac/physics/fracture_band_preconditioner.h>
 
 #include <Epetra_CrsMatrix.h>
-#include <Epetra_MpiComm.h>
 
 #include <algorithm>
 #include <string>
