@@ -120,6 +120,7 @@ namespace PolyFrac
 
     // C = K[own rows, S], and this rank's entries of the upper triangle of
     // K_SS (K is symmetric: band row p is band column p).
+    band_rows.resize(owned_map.NumMyElements());
     std::vector<std::tuple<int, int, double>>                 block_entries;
     std::vector<std::vector<std::pair<unsigned int, double>>> coupling_rows;
     for (int i = 0; i < rows.NumMyElements(); ++i)
@@ -130,7 +131,7 @@ namespace PolyFrac
         K.ExtractMyRowView(i, length, values, indices);
         const int p = band_position(band, rows.GID(i));
         if (p >= 0)
-          owned_band.emplace_back(i, p);
+          band_rows[owned_map.LID(p)] = i;
         std::vector<std::pair<unsigned int, double>> entries;
         for (int e = 0; e < length; ++e)
           {
@@ -148,16 +149,6 @@ namespace PolyFrac
             coupling_rows.push_back(std::move(entries));
           }
       }
-    AssertThrow(static_cast<int>(owned_band.size()) ==
-                    owned_map.NumMyElements() &&
-                  std::all_of(owned_band.begin(),
-                              owned_band.end(),
-                              [&](const auto &row) {
-                                return owned_map.LID(row.second) ==
-                                       static_cast<int>(&row -
-                                                        owned_band.data());
-                              }),
-                ExcInternalError());
     coupling_pattern.copy_from(coupled_rows.size(),
                                relevant_map.NumMyElements(),
                                coupling_rows.begin(),
@@ -285,11 +276,13 @@ namespace PolyFrac
     // x_S = K_SS^{-1} b_S; r = b − K x_S = b − C x_S, with x_S on the band
     // columns of this rank's rows.
     const double *b = src.begin();
-    for (unsigned int k = 0; k < owned_band.size(); ++k)
-      band_rhs[k] = b[owned_band[k].first];
+    for (unsigned int k = 0; k < band_rows.size(); ++k)
+      band_rhs[k] = b[band_rows[k]];
     solve_on_band();
     first_solution = band_solution;
     on_columns.Import(band_solution, halo, Insert);
+    // A vector of src's size from deal.II's pool, not allocated anew at
+    // every application.
     GrowingVectorMemory<VectorType>            memory;
     typename VectorMemory<VectorType>::Pointer residual(memory);
     residual->reinit(src, true);
@@ -309,12 +302,12 @@ namespace PolyFrac
         on_columns[e->column()] += e->value() * y[coupled_rows[k]];
     band_solution.PutScalar(0.);
     band_solution.Export(on_columns, halo, Add);
-    for (unsigned int k = 0; k < owned_band.size(); ++k)
-      band_rhs[k] = r[owned_band[k].first] - band_solution[k];
+    for (unsigned int k = 0; k < band_rows.size(); ++k)
+      band_rhs[k] = r[band_rows[k]] - band_solution[k];
     solve_on_band();
     double *x = dst.begin();
-    for (unsigned int k = 0; k < owned_band.size(); ++k)
-      x[owned_band[k].first] += first_solution[k] + band_solution[k];
+    for (unsigned int k = 0; k < band_rows.size(); ++k)
+      x[band_rows[k]] += first_solution[k] + band_solution[k];
   }
 
 

@@ -91,12 +91,12 @@ namespace PolyFrac
     /** Whether the band, all ranks' rows of it, is empty: then B = M. */
     bool band_is_empty;
 
-    /** This rank's rows of the band: (index among this rank's rows of K,
-     * position in the band), in order. */
-    std::vector<std::pair<int, int>> owned_band;
+    /** This rank's rows of the band: per position in #owned_map, the
+     * row's index among this rank's rows of K. */
+    std::vector<int> band_rows;
 
     /**
-     * The band's positions: this rank's rows (#owned_band), with them the
+     * The band's positions: this rank's rows (#band_rows), with them the
      * band columns its rows of K couple to, and on rank 0 all of them (on
      * the others none).
      */
