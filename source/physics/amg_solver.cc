@@ -121,6 +121,21 @@ namespace PolyFrac
         parameters.set("aggregation: damping factor", 0.);
         parameters.set("aggregation: type", "MIS");
       }
+    // On several ranks, ML moves each coarse level onto fewer ranks when
+    // it has fewer than 512 rows per rank, and onto one below 5,000 rows
+    // (its defaults), partitioned by Zoltan's hypergraph method (which
+    // needs no coordinates; ML asks for their dimension all the same).
+    // Otherwise every coarse level keeps one part per rank, down to a few
+    // rows each, whose smoother sweeps are mostly halo exchanges as the
+    // ranks grow (issue 31; benchmarks/README.md, "The AMG's coarse levels
+    // on several ranks").
+    if (matrix.trilinos_matrix().Comm().NumProc() > 1)
+      {
+        parameters.set("repartition: enable", 1);
+        parameters.set("repartition: partitioner", "Zoltan");
+        parameters.set("repartition: Zoltan type", "hypergraph");
+        parameters.set("repartition: Zoltan dimensions", static_cast<int>(dim));
+      }
     amg.initialize(matrix, parameters);
   }
 
