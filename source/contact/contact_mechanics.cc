@@ -119,8 +119,10 @@ namespace PolyFrac
                                                   dirichlet,
                                                   geometry.mesh.vertices,
                                                   solver);
-        trilinos_stiffness.reinit(condensation->pattern());
-        elasticity.assemble_operator(trilinos_stiffness, load_vector);
+        condensation->assemble_stiffness(
+          trilinos_stiffness, [&](TrilinosWrappers::SparseMatrix &A) {
+            elasticity.assemble_operator(A, load_vector);
+          });
       }
     else if (dofs.is_distributed())
       {

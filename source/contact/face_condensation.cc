@@ -11,6 +11,7 @@
 #include <polyfrac/physics/amg_solver.h>
 #include <polyfrac/physics/fracture_band_preconditioner.h>
 
+#include <Epetra_CrsGraph.h>
 #include <Epetra_CrsMatrix.h>
 #include <malloc.h>
 
@@ -32,6 +33,21 @@ namespace PolyFrac
      * take at most 54.
      */
     constexpr unsigned int reused_amg_iterations = 100;
+
+    /**
+     * The columns of row @p row of @p pattern, sorted. (Its iterators
+     * would do, but the begin() of an empty row searches the rows after
+     * it for an entry: over every row, quadratic in their number.)
+     */
+    std::vector<types::global_dof_index>
+    row_columns(const DynamicSparsityPattern &pattern,
+                const types::global_dof_index row)
+    {
+      std::vector<types::global_dof_index> columns(pattern.row_length(row));
+      for (unsigned int k = 0; k < columns.size(); ++k)
+        columns[k] = pattern.column_number(row, k);
+      return columns;
+    }
   } // namespace
 
 
@@ -116,10 +132,10 @@ namespace PolyFrac
       stencils.push_back(face_stencil(i));
     // The pattern of A: the cell blocks, and the cells each bubble enters.
     // Distributed, each rank makes the rows that its polytopes and its
-    // fracture faces add to (some of them other ranks' rows).
-    DynamicSparsityPattern                 dsp(n_u);
+    // fracture faces add to (some of them other ranks' rows); those of the
+    // faces are kept apart (eliminated) for the reduced operators.
+    DynamicSparsityPattern                 dsp(n_u), eliminated(n_u);
     std::vector<std::vector<unsigned int>> bubble_cells(jumps.size());
-    dofs.add_cell_couplings(dsp);
     for (unsigned int c = 0; c < dofs.n_cells(); ++c)
       for (const unsigned int i : dofs.cell_bubbles(c))
         bubble_cells[i].push_back(c);
@@ -142,26 +158,123 @@ namespace PolyFrac
             {
               const auto &other = stencils[(x - first_bubble) / dim];
               for (const auto row : other)
-                dsp.add_entries(row, stencil.begin(), stencil.end(), true);
+                eliminated.add_entries(row,
+                                       stencil.begin(),
+                                       stencil.end(),
+                                       true);
               for (const auto row : stencil)
-                dsp.add_entries(row, other.begin(), other.end(), true);
+                eliminated.add_entries(row, other.begin(), other.end(), true);
             }
           else if (free_nodal[x])
             {
-              dsp.add_entries(x, stencil.begin(), stencil.end(), true);
+              eliminated.add_entries(x, stencil.begin(), stencil.end(), true);
               for (const auto row : stencil)
-                dsp.add(row, x);
+                eliminated.add(row, x);
             }
+      }
+    dofs.add_cell_couplings(dsp);
+    for (types::global_dof_index row = 0; row < n_u; ++row)
+      {
+        const auto columns = row_columns(eliminated, row);
+        dsp.add_entries(row, columns.begin(), columns.end(), true);
       }
     if (!dofs.is_distributed())
       {
         reduced_pattern.copy_from(dsp);
         return;
       }
+    assembly_pattern = std::make_unique<TrilinosWrappers::SparsityPattern>();
     make_distributed_pattern(dsp,
                              dofs.locally_owned_dofs(),
                              dofs.get_communicator(),
-                             reduced_pattern);
+                             *assembly_pattern);
+    dsp.reinit(0, 0);
+    restrict_other_rows(*assembly_pattern, eliminated, reduced_pattern);
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::restrict_other_rows(
+    const TrilinosWrappers::SparsityPattern &whole,
+    const DynamicSparsityPattern            &other_rows,
+    TrilinosWrappers::SparsityPattern       &restricted) const
+  {
+    // This rank's rows of whole (all ranks' entries in them), then the
+    // entries of other_rows: those in other ranks' rows reach their owners
+    // at the compression, whose rows hold them already.
+    const IndexSet &owned    = dofs.locally_owned_dofs();
+    IndexSet        writable = owned;
+    for (types::global_dof_index row = 0; row < other_rows.n_rows(); ++row)
+      if (other_rows.row_length(row) > 0)
+        writable.add_index(row);
+    writable.compress();
+    const Epetra_CrsGraph &graph = whole.trilinos_sparsity_pattern();
+    restricted.reinit(owned, owned, writable, dofs.get_communicator());
+    std::vector<types::global_dof_index> columns;
+    for (int local = 0; local < graph.NumMyRows(); ++local)
+      {
+        int  length;
+        int *indices;
+        graph.ExtractMyRowView(local, length, indices);
+        columns.resize(length);
+        for (int e = 0; e < length; ++e)
+          columns[e] = graph.ColMap().GID(indices[e]);
+        std::sort(columns.begin(), columns.end());
+        restricted.add_entries(graph.RowMap().GID(local),
+                               columns.begin(),
+                               columns.end(),
+                               true);
+      }
+    for (const auto row : writable)
+      {
+        columns = row_columns(other_rows, row);
+        restricted.add_entries(row, columns.begin(), columns.end(), true);
+      }
+    restricted.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  FaceCondensation<dim>::assemble_stiffness(
+    TrilinosWrappers::SparseMatrix                              &A,
+    const std::function<void(TrilinosWrappers::SparseMatrix &)> &assemble)
+  {
+    A.reinit(reduced_pattern);
+    if (!assembly_pattern)
+      {
+        assemble(A);
+        return;
+      }
+    {
+      TrilinosWrappers::SparseMatrix assembled;
+      assembled.reinit(*assembly_pattern);
+      assemble(assembled);
+      // Both graphs have the same rows here, so the same column map, and
+      // each row lists the same columns in the same order.
+      const Epetra_CrsMatrix &from = assembled.trilinos_matrix();
+      auto &to = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+      AssertThrow(from.NumMyRows() == to.NumMyRows() &&
+                    from.ColMap().SameAs(to.ColMap()),
+                  ExcInternalError());
+      for (int local = 0; local < from.NumMyRows(); ++local)
+        {
+          int     length, to_length;
+          double *values, *to_values;
+          int    *columns, *to_columns;
+          from.ExtractMyRowView(local, length, values, columns);
+          to.ExtractMyRowView(local, to_length, to_values, to_columns);
+          AssertThrow(to_length == length &&
+                        std::equal(columns, columns + length, to_columns),
+                      ExcInternalError());
+          std::copy(values, values + length, to_values);
+        }
+    }
+    assembly_pattern.reset();
+    malloc_trim(0);
   }
 
 

@@ -592,7 +592,7 @@ namespace PolyFrac
      * Linear solver/Method = direct in the displacement block of the
      * saddle-point pattern (`sparsity`, `stiffness`); with the condensed
      * steps as a Trilinos matrix on the graph of the reduced operators
-     * (`trilinos_stiffness`, FaceCondensation::pattern()), and then
+     * (`trilinos_stiffness`, FaceCondensation::assemble_stiffness()), and then
      * `sparsity` and `stiffness` stay empty (benchmarks/README.md, "Memory
      * budget"). On several ranks A is always `trilinos_stiffness`, whose
      * rows each rank owns (on the cell blocks with Method = direct).

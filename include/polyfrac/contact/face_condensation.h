@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -16,6 +17,7 @@
 #include <polyfrac/discretization/local_reconstruction.h>
 #include <polyfrac/dofs/dof_map.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -82,8 +84,8 @@ namespace PolyFrac
   public:
     /**
      * @p stiffness is A, the stiffness of the displacement dofs, which the
-     * caller assembles on pattern() after this constructor (A is stored
-     * once, on the graph of the reduced operators); @p jumps the
+     * caller assembles by assemble_stiffness() after this constructor (A is
+     * stored once, on the graph of the reduced operators); @p jumps the
      * coefficients of [[u]]_σ; @p dirichlet the fixed dofs.
      */
     FaceCondensation(const TrilinosWrappers::SparseMatrix            &stiffness,
@@ -144,14 +146,20 @@ namespace PolyFrac
     }
 
     /**
-     * The graph of the reduced operators, which holds that of A (the cell
-     * blocks, fixed dofs included) too: the caller builds A on it.
+     * Builds A, the matrix given to the constructor, on the graph of the
+     * reduced operators, which holds that of A (the cell blocks, fixed dofs
+     * included) too: @p assemble adds the cell blocks to the matrix it is
+     * given and compresses it. On several ranks the reduced operators hold,
+     * of the other ranks' rows, only those that the eliminations of this
+     * rank's faces add to, while the cell blocks of this rank's polytopes
+     * also add to its node sides that other ranks own: A is then assembled
+     * on a graph with those rows too, and its rows on this rank copied
+     * onto the reduced one. That graph is freed afterwards.
      */
-    const TrilinosWrappers::SparsityPattern &
-    pattern() const
-    {
-      return reduced_pattern;
-    }
+    void
+    assemble_stiffness(
+      TrilinosWrappers::SparseMatrix                              &A,
+      const std::function<void(TrilinosWrappers::SparseMatrix &)> &assemble);
 
     /** Whether every face can be condensed (see the class documentation). */
     static bool
@@ -365,6 +373,17 @@ namespace PolyFrac
     make_reduced_pattern();
 
     /**
+     * @p restricted: this rank's rows of @p whole (with all ranks' entries
+     * in them) and, of the other ranks' rows, only those in which
+     * @p other_rows has entries, with these entries (which @p whole holds
+     * too).
+     */
+    void
+    restrict_other_rows(const TrilinosWrappers::SparsityPattern &whole,
+                        const DynamicSparsityPattern            &other_rows,
+                        TrilinosWrappers::SparsityPattern &restricted) const;
+
+    /**
      * @p matrix = Z^T A Z + Σ_σ |σ| E (on the jump variables) + the
      * coupling of the Coulomb slip faces.
      *
@@ -457,6 +476,17 @@ namespace PolyFrac
      * Epetra graph: the operators built on it share its index arrays.
      */
     TrilinosWrappers::SparsityPattern reduced_pattern;
+
+    /**
+     * On several ranks, until assemble_stiffness(): #reduced_pattern with
+     * all the rows of other ranks that this rank's cell blocks add to.
+     * Each compression of a matrix sends all of its rows of other ranks,
+     * zeros included: the reduced operators, compressed twice per step,
+     * would send the cell blocks' rows on the partition's boundary at every
+     * step (benchmarks/README.md, "The reduced operators on several
+     * ranks").
+     */
+    std::unique_ptr<TrilinosWrappers::SparsityPattern> assembly_pattern;
 
     /** Dofs that are neither fixed nor bubbles. */
     std::vector<bool> free_nodal;
