@@ -90,6 +90,11 @@ namespace PolyFrac
 
 
   template <int dim>
+  FaceCondensation<dim>::~FaceCondensation() = default;
+
+
+
+  template <int dim>
   std::vector<types::global_dof_index>
   FaceCondensation<dim>::fracture_band() const
   {
@@ -884,6 +889,7 @@ namespace PolyFrac
                          (!symmetric && structure != amg_structure);
     if (new_amg)
       {
+        band_preconditioner.reset();
         amg.reset();
         amg_matrix.reset();
       }
@@ -896,32 +902,33 @@ namespace PolyFrac
       build_amg(std::move(matrix), symmetric, structure);
 
     // After the AMG set-up, whose transient sets the peak memory. The band
-    // of a symmetric step is factorised once, for this step's operator.
+    // of a symmetric step is factorised once, for this step's operator:
+    // after the first, on the first one's maps and ordering.
     const TrilinosWrappers::SparseMatrix &step_matrix =
       new_amg ? *amg_matrix : *matrix;
-    std::unique_ptr<FractureBandPreconditioner> band_preconditioner;
     if (symmetric)
       {
         const Timer factorization_timer;
-        band_preconditioner =
-          std::make_unique<FractureBandPreconditioner>(step_matrix, band, *amg);
+        if (band_preconditioner)
+          band_preconditioner->refactorize(step_matrix, *amg);
+        else
+          band_preconditioner =
+            std::make_unique<FractureBandPreconditioner>(step_matrix,
+                                                         band,
+                                                         *amg);
         times.band_factorization += factorization_timer.wall_time();
       }
+    FractureBandPreconditioner *const step_band =
+      symmetric ? band_preconditioner.get() : nullptr;
     const Vector<double> rhs = condensed_rhs(faces, rows, residual, offset);
     Vector<double>       y(n_u);
     KrylovSolve          krylov{symmetric ? "CG" : "GMRES", 0, true};
     if (new_amg)
-      std::tie(krylov.iterations, krylov.converged) = krylov_solve(
-        band_preconditioner.get(), *amg_matrix, rhs, solver, enough, y);
+      std::tie(krylov.iterations, krylov.converged) =
+        krylov_solve(step_band, *amg_matrix, rhs, solver, enough, y);
     else
-      solve_with_reused_amg(matrix,
-                            symmetric,
-                            structure,
-                            band_preconditioner.get(),
-                            rhs,
-                            enough,
-                            y,
-                            krylov);
+      solve_with_reused_amg(
+        matrix, symmetric, structure, step_band, rhs, enough, y, krylov);
     ++times.n_steps;
     times.n_iterations += krylov.iterations;
     const auto count_the_rest = [&]() {
@@ -1039,6 +1046,7 @@ namespace PolyFrac
   void
   FaceCondensation<dim>::release_amg()
   {
+    band_preconditioner.reset();
     amg.reset();
     amg_matrix.reset();
     malloc_trim(0);

@@ -10,6 +10,7 @@
 #include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
+#include <numeric>
 #include <string>
 #include <tuple>
 
@@ -107,48 +108,25 @@ namespace PolyFrac
     , root_rhs(root_map)
   {
     AssertThrow(std::is_sorted(band.begin(), band.end()), ExcInternalError());
-    const Epetra_CrsMatrix &K    = matrix.trilinos_matrix();
-    const Epetra_Map       &rows = K.RowMap();
-
-    // Per column of K: its index in relevant_map, or −1 (not in the band).
-    std::vector<int> column_index(K.NumMyCols());
+    const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
+    row_position.resize(K.NumMyRows());
+    band_rows.resize(owned_map.NumMyElements());
+    for (int i = 0; i < K.NumMyRows(); ++i)
+      {
+        row_position[i] = band_position(band, K.RowMap().GID(i));
+        if (row_position[i] >= 0)
+          band_rows[owned_map.LID(row_position[i])] = i;
+      }
+    column_index.resize(K.NumMyCols());
     for (int j = 0; j < K.NumMyCols(); ++j)
       {
         const int p     = band_position(band, K.ColMap().GID(j));
         column_index[j] = p < 0 ? -1 : relevant_map.LID(p);
       }
 
-    // C = K[own rows, S], and this rank's entries of the upper triangle of
-    // K_SS (K is symmetric: band row p is band column p).
-    band_rows.resize(owned_map.NumMyElements());
-    std::vector<std::tuple<int, int, double>>                 block_entries;
     std::vector<std::vector<std::pair<unsigned int, double>>> coupling_rows;
-    for (int i = 0; i < rows.NumMyElements(); ++i)
-      {
-        int     length;
-        double *values;
-        int    *indices;
-        K.ExtractMyRowView(i, length, values, indices);
-        const int p = band_position(band, rows.GID(i));
-        if (p >= 0)
-          band_rows[owned_map.LID(p)] = i;
-        std::vector<std::pair<unsigned int, double>> entries;
-        for (int e = 0; e < length; ++e)
-          {
-            const int q = column_index[indices[e]];
-            if (q < 0)
-              continue;
-            entries.emplace_back(q, values[e]);
-            if (const int column = relevant_map.GID(q); p >= 0 && column <= p)
-              block_entries.emplace_back(column, p, values[e]);
-          }
-        if (!entries.empty())
-          {
-            std::sort(entries.begin(), entries.end());
-            coupled_rows.push_back(i);
-            coupling_rows.push_back(std::move(entries));
-          }
-      }
+    std::vector<std::tuple<int, int, double>>                 block_entries;
+    extract_band(K, coupled_rows, coupling_rows, block_entries);
     coupling_pattern.copy_from(coupled_rows.size(),
                                relevant_map.NumMyElements(),
                                coupling_rows.begin(),
@@ -166,26 +144,106 @@ namespace PolyFrac
 
 
   void
+  FractureBandPreconditioner::extract_band(
+    const Epetra_CrsMatrix                                    &K,
+    std::vector<int>                                          &rows,
+    std::vector<std::vector<std::pair<unsigned int, double>>> &coupling_rows,
+    std::vector<std::tuple<int, int, double>> &block_entries) const
+  {
+    // C = K[own rows, S], and this rank's entries of the upper triangle of
+    // K_SS (K is symmetric: band row p is band column p).
+    for (int i = 0; i < K.NumMyRows(); ++i)
+      {
+        int     length;
+        double *values;
+        int    *indices;
+        K.ExtractMyRowView(i, length, values, indices);
+        const int                                    p = row_position[i];
+        std::vector<std::pair<unsigned int, double>> entries;
+        for (int e = 0; e < length; ++e)
+          {
+            const int q = column_index[indices[e]];
+            if (q < 0)
+              continue;
+            entries.emplace_back(q, values[e]);
+            if (const int column = relevant_map.GID(q); p >= 0 && column <= p)
+              block_entries.emplace_back(column, p, values[e]);
+          }
+        if (!entries.empty())
+          {
+            std::sort(entries.begin(), entries.end());
+            rows.push_back(i);
+            coupling_rows.push_back(std::move(entries));
+          }
+      }
+  }
+
+
+
+  void
+  FractureBandPreconditioner::refactorize(
+    const TrilinosWrappers::SparseMatrix    &matrix,
+    const TrilinosWrappers::PreconditionAMG &new_amg)
+  {
+    amg = &new_amg;
+    if (band_is_empty)
+      return;
+    const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
+    AssertThrow(K.NumMyRows() == static_cast<int>(row_position.size()) &&
+                  K.NumMyCols() == static_cast<int>(column_index.size()),
+                ExcInternalError());
+    std::vector<int>                                          rows;
+    std::vector<std::vector<std::pair<unsigned int, double>>> coupling_rows;
+    std::vector<std::tuple<int, int, double>>                 block_entries;
+    extract_band(K, rows, coupling_rows, block_entries);
+    AssertThrow(rows == coupled_rows, ExcInternalError());
+    coupling.copy_from(coupling_rows.begin(), coupling_rows.end());
+
+    // The entries of K_SS come in the order of the first factorisation:
+    // only their values move to rank 0, where they take their places in
+    // the block and CHOLMOD factorises it again on the same ordering.
+    std::vector<double> values(block_entries.size());
+    for (unsigned int k = 0; k < values.size(); ++k)
+      values[k] = std::get<2>(block_entries[k]);
+    values = gather_on_root(values, matrix.get_mpi_communicator());
+    if (block == nullptr)
+      return;
+    AssertThrow(values.size() == block_order.size(), ExcInternalError());
+    auto *block_values = static_cast<double *>(block->x);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      block_values[block_order[k]] = values[k];
+    cholmod_factorize(block, factor, &common);
+    check_factorization();
+  }
+
+
+
+  void
   FractureBandPreconditioner::factorize_block(
-    std::vector<std::tuple<int, int, double>> entries)
+    const std::vector<std::tuple<int, int, double>> &entries)
   {
     const unsigned int n = root_map.NumMyElements();
     if (n == 0)
       return;
-    // By columns, then rows: CHOLMOD's packed, sorted upper triangle.
-    std::sort(entries.begin(), entries.end(), [](const auto &a, const auto &b) {
-      return std::tie(std::get<1>(a), std::get<0>(a)) <
-             std::tie(std::get<1>(b), std::get<0>(b));
+    // By columns, then rows: CHOLMOD's packed, sorted upper triangle;
+    // entry k goes to place block_order[k].
+    std::vector<unsigned int> sorted(entries.size());
+    std::iota(sorted.begin(), sorted.end(), 0);
+    std::sort(sorted.begin(), sorted.end(), [&](const auto a, const auto b) {
+      return std::tie(std::get<1>(entries[a]), std::get<0>(entries[a])) <
+             std::tie(std::get<1>(entries[b]), std::get<0>(entries[b]));
     });
-    cholmod_sparse *block = cholmod_allocate_sparse(
+    block_order.resize(entries.size());
+    block = cholmod_allocate_sparse(
       n, n, entries.size(), true, true, 1, CHOLMOD_REAL, &common);
     int    *starts  = static_cast<int *>(block->p);
     int    *indices = static_cast<int *>(block->i);
     double *values  = static_cast<double *>(block->x);
     std::fill(starts, starts + n + 1, 0);
-    for (unsigned int k = 0; k < entries.size(); ++k)
+    for (unsigned int k = 0; k < sorted.size(); ++k)
       {
-        const auto [row, column, value] = entries[k];
+        const auto [row, column, value] = entries[sorted[k]];
+        block_order[sorted[k]]          = k;
         indices[k]                      = row;
         values[k]                       = value;
         ++starts[column + 1];
@@ -199,17 +257,22 @@ namespace PolyFrac
     common.method[0].ordering = CHOLMOD_AMD;
     factor                    = cholmod_analyze(block, &common);
     cholmod_factorize(block, factor, &common);
-    const bool positive_definite =
-      factor != nullptr && common.status == CHOLMOD_OK;
-    cholmod_free_sparse(&block, &common);
-    if (!positive_definite)
+    check_factorization();
+    rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
+  }
+
+
+
+  void
+  FractureBandPreconditioner::check_factorization() const
+  {
+    if (factor == nullptr || common.status != CHOLMOD_OK)
       raise_rank_local_error(
         "The fracture band of a condensed contact step is not positive "
         "definite (CHOLMOD status " +
         std::to_string(common.status) +
         "): the reduced operator is not symmetric positive definite. Use "
         "Linear solver/Method = direct.");
-    rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
   }
 
 
@@ -226,6 +289,7 @@ namespace PolyFrac
   FractureBandPreconditioner::~FractureBandPreconditioner()
   {
     cholmod_free_factor(&factor, &common);
+    cholmod_free_sparse(&block, &common);
     cholmod_free_dense(&rhs, &common);
     cholmod_free_dense(&solution, &common);
     cholmod_free_dense(&work_y, &common);

@@ -95,6 +95,9 @@ namespace PolyFrac
                      const std::vector<Point<dim>>                   &vertices,
                      const LinearSolverParameters                    &solver);
 
+    /** Where FractureBandPreconditioner is complete. */
+    ~FaceCondensation();
+
     /** How a condensed step was solved. */
     struct KrylovSolve
     {
@@ -182,9 +185,10 @@ namespace PolyFrac
           Vector<double>                            &step);
 
     /**
-     * Frees the AMG and the reduced operator it was built on (about as
-     * large as A), and hands the freed heap back to the system: for when
-     * no step of this operator follows. The next solve() builds a new AMG.
+     * Frees the AMG, the reduced operator it was built on (about as
+     * large as A) and the fracture band's factorisation, and hands the freed
+     * heap back to the system: for when no step of this operator follows. The
+     * next solve() builds a new AMG.
      */
     void
     release_amg();
@@ -450,7 +454,14 @@ namespace PolyFrac
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     bool                                               amg_symmetric = false;
-    std::vector<bool>                                  amg_structure;
+
+    /**
+     * The fracture band's preconditioner of the symmetric steps, kept from
+     * one to the next (refactorised: every step's operator lives on
+     * #reduced_pattern) and freed with the AMG.
+     */
+    std::unique_ptr<FractureBandPreconditioner> band_preconditioner;
+    std::vector<bool>                           amg_structure;
 
     /**
      * The fracture band of FractureBandPreconditioner: the free dofs of

@@ -77,6 +77,18 @@ namespace PolyFrac
     void
     replace_amg(const TrilinosWrappers::PreconditionAMG &new_amg);
 
+    /**
+     * Factorises K_SS again for @p matrix, a K on the graph of the one
+     * given to the constructor (the next condensed step's operator), and
+     * takes @p new_amg as M. The maps, imports, C's pattern and CHOLMOD's
+     * ordering and symbolic factorisation are those of the constructor:
+     * only the values of C and K_SS are new, and only those of K_SS move
+     * to rank 0. Collective.
+     */
+    void
+    refactorize(const TrilinosWrappers::SparseMatrix    &matrix,
+                const TrilinosWrappers::PreconditionAMG &new_amg);
+
     /** Frees CHOLMOD's objects. */
     ~FractureBandPreconditioner();
 
@@ -106,6 +118,13 @@ namespace PolyFrac
      * rank 0 (#root_map from #owned_map; backwards, the scatter). */
     Epetra_Import halo, gather;
 
+    /** Per row of K on this rank: its position in the band, or −1. */
+    std::vector<int> row_position;
+
+    /** Per column of K on this rank: its index in #relevant_map, or −1
+     * (not in the band). */
+    std::vector<int> column_index;
+
     /**
      * C = K[own rows, S]: the rows of this rank that couple to the band
      * (indices among this rank's rows), and their entries in the band's
@@ -124,7 +143,11 @@ namespace PolyFrac
      */
     mutable cholmod_common common;
     cholmod_factor        *factor = nullptr;
-    mutable cholmod_dense *rhs = nullptr, *solution = nullptr,
+    /** On rank 0, K_SS's upper triangle as CHOLMOD factorises it, and per
+     * entry in the order the ranks send them, its place there. */
+    cholmod_sparse           *block = nullptr;
+    std::vector<unsigned int> block_order;
+    mutable cholmod_dense    *rhs = nullptr, *solution = nullptr,
                           *work_y = nullptr, *work_e = nullptr;
 
     /** On this rank's band rows: a band solve's right-hand side and
@@ -137,10 +160,29 @@ namespace PolyFrac
     /** On rank 0, the whole band: a solve's right-hand side. */
     mutable Epetra_Vector root_rhs;
 
-    /** Factorises K_SS on rank 0 from the upper triangle @p entries (row,
-     * column, value) that each rank has of its band rows. Collective. */
+    /**
+     * Of @p K: the rows of this rank that couple to the band (@p rows,
+     * indices among its rows, appended), their entries in the band's
+     * columns (@p coupling_rows) and this rank's entries (row, column,
+     * value) of the upper triangle of K_SS (@p block_entries), always in
+     * the same order for the same graph.
+     */
     void
-    factorize_block(std::vector<std::tuple<int, int, double>> entries);
+    extract_band(
+      const Epetra_CrsMatrix                                    &K,
+      std::vector<int>                                          &rows,
+      std::vector<std::vector<std::pair<unsigned int, double>>> &coupling_rows,
+      std::vector<std::tuple<int, int, double>> &block_entries) const;
+
+    /** Factorises K_SS on rank 0 from @p entries, all ranks' entries of
+     * the upper triangle (row, column, value) in rank order; elsewhere
+     * nothing. */
+    void
+    factorize_block(const std::vector<std::tuple<int, int, double>> &entries);
+
+    /** Stops the run if CHOLMOD found K_SS not positive definite. */
+    void
+    check_factorization() const;
 
     /** #band_solution = K_SS^{-1} #band_rhs. Collective. */
     void
