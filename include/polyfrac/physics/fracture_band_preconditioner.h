@@ -39,10 +39,11 @@ namespace PolyFrac
    * supported on the band, whatever M.
    *
    * Distributed, K_SS is factorised on rank 0 alone: each rank sends it
-   * the entries of its own band rows once per factorisation, and each band
-   * solve gathers the right-hand side there and sends each rank its rows
-   * of the solution, while x_S and C^T y (below) move between the ranks by
-   * the band's halos. No other rank holds the band's matrix or its factor.
+   * the entries of its own band rows once per factorisation (their values
+   * only at a refactorisation), and each band solve gathers the
+   * right-hand side there and sends each rank its rows of the solution,
+   * while x_S and C^T y (below) move between the ranks by the band's
+   * halos. No other rank holds the band's matrix or its factor.
    * The band solve stays exact. Split among the ranks' rows (block
    * Jacobi), it would cut the fracture modes it is there for: Krylov
    * iterations 187 -> 244 on 2 ranks and 196 -> 483 on 4, B2-3D Tresca
