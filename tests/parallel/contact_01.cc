@@ -88,7 +88,7 @@ namespace
 
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << file << ", " << selection_name(prm.solver.method) << ", "
-                << (prm.contact.split_bubbles ? "split bubbles, " : "")
+                << (prm.contact.split_bubbles ? "" : "plus-side bubbles, ")
                 << prm.mesh.cells_per_polytope
                 << " cells per polytope: " << serial.displacement.size()
                 << " displacement dofs, " << serial.multipliers.size()
@@ -137,11 +137,14 @@ main(int argc, char **argv)
           check("b2-3d-tresca.prm", overrides);
         }
       check("network-3d-coulomb.prm", common);
-      // Split bubbles enter both sides of their face: the bubbles of
-      // faces of different ranks then share a polytope.
-      auto split = common;
-      split.push_back("Contact/Bubble placement=split");
-      split.push_back("Mesh/Cells per polytope=4");
-      check("network-3d-coulomb.prm", split);
+      // Split bubbles (the default) enter both sides of their face: the
+      // bubbles of faces of different ranks then share a polytope, also
+      // an agglomerated one. The paper's plus side too.
+      auto agglomerated = common;
+      agglomerated.push_back("Mesh/Cells per polytope=4");
+      check("network-3d-coulomb.prm", agglomerated);
+      auto plus_side = common;
+      plus_side.push_back("Contact/Bubble placement=plus side");
+      check("network-3d-coulomb.prm", plus_side);
     }
 }

@@ -42,8 +42,9 @@ namespace PolyFrac
 
     /** Bubbles: whether the fracture faces carry bubbles. */
     bool bubbles;
-    /** Bubble placement = split: half of each bubble on either side
-     * (BubblePlacement::split); plus side otherwise. */
+    /** Bubble placement = split (the default) with Bubbles = true: half
+     * of each bubble on either side (BubblePlacement::split); the paper's
+     * plus side otherwise. */
     bool split_bubbles;
     /** β > 0, or 0 for auto: (2μ + λ)/h_σ per fracture face. */
     double beta;
