@@ -93,6 +93,11 @@ namespace PolyFrac
   std::vector<UnusedEntry>
   ContactParameters::unused_entries() const
   {
-    return unused_parameter_extension_entries("Contact", *friction_law);
+    std::vector<UnusedEntry> unused =
+      unused_parameter_extension_entries("Contact", *friction_law);
+    if (!bubbles)
+      unused.emplace_back("Contact/Bubble placement",
+                          "Contact/Bubbles = false");
+    return unused;
   }
 } // namespace PolyFrac

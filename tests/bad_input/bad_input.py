@@ -679,6 +679,14 @@ CASES = {
             "Contact", Friction_law="Tresca", Tresca_threshold="1",
             Friction_coefficient="0.6")},
         status=0),
+    "bubble_placement_without_bubbles": case(
+        "`Bubble placement = plus side` with `Bubbles = false`: a warning "
+        "(without bubbles there is nothing to place), runs",
+        ["Warning: Contact/Bubble placement is not used by Contact/Bubbles = "
+         "false and is ignored"],
+        files={"scene.prm": CONTACT + SEGMENT + section(
+            "Contact", Bubbles="false", Bubble_placement="plus side")},
+        status=0),
     "cohesion_under_coulomb": case(
         "`Cohesion = 1e6` under `Friction law = Coulomb`: a warning, runs",
         ["Warning: Contact/Cohesion is not used by Contact/Friction law = "

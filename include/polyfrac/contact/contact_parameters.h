@@ -36,7 +36,8 @@ namespace PolyFrac
     friction_law_entries();
 
     /** The friction laws' entries that the chosen law leaves unused, each
-     * with the choice ("Contact/Friction law = Coulomb"). */
+     * with the choice ("Contact/Friction law = Coulomb"), and the bubble
+     * placement without bubbles. */
     std::vector<UnusedEntry>
     unused_entries() const;
 
